@@ -1,0 +1,19 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+//
+// The package's public entry header: shape-aware sigmoid neighborhoods for point sets and meshes.
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_H
+
+#include <CGAL/Sigmoid_neighborhoods/parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
+#include <CGAL/Sigmoid_neighborhoods/weighted_covariance.h>
+#include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>
+#include <CGAL/Sigmoid_neighborhoods/Optimal_sigmoid_neighborhood.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_sigmoid_features.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_H

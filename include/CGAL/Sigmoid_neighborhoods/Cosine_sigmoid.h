@@ -1,0 +1,115 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_COSINE_SIGMOID_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_COSINE_SIGMOID_H
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+
+/// The default angle tolerance (radians): angles up to it count as exactly 0 (SPEC §3).
+constexpr double DEFAULT_ANGLE_TOLERANCE = 1e-6;
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+constexpr double PI = 3.141592653589793238462643383279502884;
+// Margin in cosine space outside which the dot-product path decides without acos:
+// far above the few-ulp errors of cos and acos, far below any useful angle step.
+constexpr double COSINE_DECISION_MARGIN = 1e-9;
+} // namespace internal
+/// \endcond
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  \brief the cosine sigmoid `sig_{a,b}` of the paper's Definition 1, a weight in `[0, 1]`
+  for the angle `x` between two unit normals.
+
+  - `x < a`: 1;
+  - `a <= x <= b`, `a < b`: `1/2 cos(pi (x - a) / (b - a)) + 1/2`;
+  - `x <= a`, `a = b`: 1 (the sharp cut-off keeps `x = a`);
+  - `x > b`: 0.
+
+  Angles `x <= angle_tolerance` count as exactly 0, so that vertex normals that differ by
+  rounding on one flat face always get weight 1. `a = b = pi` gives equal weights,
+  `a = b = arccos(rho)` the sharp cut-off of a dot-product threshold `rho`.
+*/
+class Cosine_sigmoid
+{
+public:
+  /*!
+    \pre `0 <= a <= b <= pi` and `angle_tolerance >= 0`, checked: otherwise `std::invalid_argument`.
+  */
+  Cosine_sigmoid(double a, double b, double angle_tolerance = DEFAULT_ANGLE_TOLERANCE)
+    : m_a(a), m_b(b), m_tolerance(angle_tolerance)
+  {
+    if(!(a >= 0. && a <= b && b <= internal::PI))
+      throw std::invalid_argument("sigmoid parameters must satisfy 0 <= a <= b <= pi, got a = " +
+                                  std::to_string(a) + ", b = " + std::to_string(b));
+    if(!(angle_tolerance >= 0. && angle_tolerance < internal::PI))
+      throw std::invalid_argument("angle tolerance must be in [0, pi), got " +
+                                  std::to_string(angle_tolerance));
+    // Above cos(max(a, tol)) every weight is 1, below cos(max(b, tol)) every weight is 0.
+    m_cos_one = std::cos(std::max(a, angle_tolerance)) + internal::COSINE_DECISION_MARGIN;
+    m_cos_zero = std::cos(std::max(b, angle_tolerance)) - internal::COSINE_DECISION_MARGIN;
+  }
+
+  double a() const { return m_a; }
+  double b() const { return m_b; }
+  double angle_tolerance() const { return m_tolerance; }
+
+  /// returns `true` when all weights are 1 (`a = b = pi`).
+  bool is_equal_weights() const { return m_a == internal::PI && m_b == internal::PI; }
+
+  /// the weight of the angle `x` in `[0, pi]` (the reference formulation).
+  double operator()(double x) const
+  {
+    if(x <= m_tolerance || x < m_a)
+      return 1.;
+    if(m_a == m_b)
+      return x <= m_a ? 1. : 0.;
+    if(x > m_b)
+      return 0.;
+    return 0.5 * std::cos(internal::PI * (x - m_a) / (m_b - m_a)) + 0.5;
+  }
+
+  /*!
+    the weight of two unit normals given their dot product `c`: the same value as
+    `operator()(std::acos(c))`, bit for bit, but `acos` is only evaluated in the transition band.
+  */
+  double weight_from_cosine(double c) const
+  {
+    if(c > m_cos_one)
+      return 1.;
+    if(c < m_cos_zero)
+      return 0.;
+    return (*this)(std::acos(std::clamp(c, -1., 1.)));
+  }
+
+private:
+  double m_a, m_b, m_tolerance;
+  double m_cos_one, m_cos_zero;
+};
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  the angle in `[0, pi]` between two unit vectors given as coordinate triples:
+  `acos` of their dot product clamped to `[-1, 1]` (SPEC §3).
+*/
+template <typename Vector>
+double normal_angle(const Vector& n, const Vector& m)
+{
+  const double c = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
+  return std::acos(std::clamp(c, -1., 1.));
+}
+
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_COSINE_SIGMOID_H

@@ -1,0 +1,361 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_READ_ORIENTED_POINT_SET_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_IO_READ_ORIENTED_POINT_SET_H
+
+#include <CGAL/Sigmoid_neighborhoods/internal/mesh_points.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/IO/PLY.h>
+#include <CGAL/IO/STL.h>
+#include <CGAL/Point_set_3.h>
+#include <CGAL/Point_set_3/IO.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/jet_estimate_normals.h>
+#include <CGAL/mst_orient_normals.h>
+#include <CGAL/property_map.h>
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  a point set with oriented unit normals read from a file, and how it was obtained (SPEC §1).
+*/
+struct Oriented_point_set
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+  typedef Kernel::Point_3 Point_3;
+  typedef Kernel::Vector_3 Vector_3;
+
+  std::vector<Point_3> points;   ///< distinct points, in input order
+  std::vector<Vector_3> normals; ///< unit normals, one per point
+  bool is_mesh = false;                 ///< read from faces; normals are vertex normals
+  bool normals_estimated = false;       ///< the file had no normals: jet fitting + MST orientation
+  std::size_t input_vertices = 0;       ///< vertices or points in the file
+  std::size_t merged_duplicates = 0;    ///< merged into an earlier point at the same position
+  std::size_t dropped_vertices = 0;     ///< mesh vertices without a face or with an undefined normal
+  std::size_t unoriented_normals = 0;   ///< estimated normals the MST could not reach (kept as estimated)
+};
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  the error thrown by `read_oriented_point_set()`: its `what()` is one line for a person.
+*/
+struct Input_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+inline std::string lower_extension(const std::string& filename)
+{
+  const std::size_t dot = filename.find_last_of('.');
+  const std::size_t slash = filename.find_last_of("/\\");
+  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return std::string();
+  std::string ext = filename.substr(dot + 1);
+  for(char& c : ext)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+inline bool is_finite(const Oriented_point_set::Point_3& p)
+{
+  return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
+}
+
+// `x y z` or `x y z nx ny nz` per line; `#` starts a comment. Strict, with line numbers.
+inline void read_xyz(const std::string& filename, std::vector<Oriented_point_set::Point_3>& points,
+                     std::vector<Oriented_point_set::Vector_3>& normals, bool& has_normals)
+{
+  std::ifstream in(filename);
+  std::string line;
+  std::size_t line_number = 0, columns = 0;
+  while(std::getline(in, line))
+  {
+    ++line_number;
+    const std::size_t hash = line.find('#');
+    if(hash != std::string::npos)
+      line.erase(hash);
+    std::istringstream tokens(line);
+    std::vector<double> values;
+    std::string token;
+    while(tokens >> token)
+    {
+      const char* begin = token.c_str();
+      char* end = nullptr;
+      const double v = std::strtod(begin, &end);
+      if(end == begin || *end != '\0')
+        throw Input_error("line " + std::to_string(line_number) + ": '" + token + "' is not a number");
+      if(!std::isfinite(v))
+        throw Input_error("line " + std::to_string(line_number) + ": non-finite value '" + token + "'");
+      values.push_back(v);
+    }
+    if(values.empty())
+      continue;
+    if(values.size() != 3 && values.size() != 6)
+      throw Input_error("line " + std::to_string(line_number) + ": expected 3 (x y z) or 6 (x y z nx ny nz) numbers, got " +
+                        std::to_string(values.size()));
+    if(columns == 0)
+      columns = values.size();
+    else if(values.size() != columns)
+      throw Input_error("line " + std::to_string(line_number) + ": " + std::to_string(values.size()) +
+                        " numbers where earlier lines have " + std::to_string(columns));
+    points.emplace_back(values[0], values[1], values[2]);
+    if(columns == 6)
+      normals.emplace_back(values[3], values[4], values[5]);
+  }
+  if(in.bad())
+    throw Input_error("read error");
+  has_normals = (columns == 6);
+}
+
+inline bool read_soup(const std::string& filename, const std::string& ext,
+                      std::vector<Oriented_point_set::Point_3>& points,
+                      std::vector<std::vector<std::size_t>>& polygons)
+{
+  if(ext == "off") return CGAL::IO::read_OFF(filename, points, polygons);
+  if(ext == "obj") return CGAL::IO::read_OBJ(filename, points, polygons);
+  if(ext == "ply") return CGAL::IO::read_PLY(filename, points, polygons);
+  if(ext == "stl") return CGAL::IO::read_STL(filename, points, polygons);
+  return false;
+}
+
+inline void mesh_to_points(std::vector<Oriented_point_set::Point_3>& points,
+                           std::vector<std::vector<std::size_t>>& polygons, Oriented_point_set& out)
+{
+  typedef Oriented_point_set::Point_3 Point_3;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  out.is_mesh = true;
+  out.input_vertices = points.size();
+  for(std::size_t v = 0; v < points.size(); ++v)
+    if(!is_finite(points[v]))
+      throw Input_error("vertex " + std::to_string(v) + " has a non-finite coordinate");
+
+  // Vertices at one position become the first of them (SPEC §1), faces follow.
+  std::map<std::array<double, 3>, std::size_t> first_at;
+  std::vector<std::size_t> representative(points.size());
+  std::vector<bool> referenced(points.size(), false);
+  for(const auto& polygon : polygons)
+    for(std::size_t v : polygon)
+    {
+      if(v >= points.size())
+        throw Input_error("a face refers to vertex " + std::to_string(v) + " of " + std::to_string(points.size()));
+      referenced[v] = true;
+    }
+  std::vector<std::size_t> compact(points.size(), std::size_t(-1));
+  std::vector<Point_3> distinct;
+  std::size_t referenced_count = 0;
+  for(std::size_t v = 0; v < points.size(); ++v)
+  {
+    if(!referenced[v])
+      continue;
+    ++referenced_count;
+    const auto inserted = first_at.emplace(std::array<double, 3>{{points[v].x(), points[v].y(), points[v].z()}}, v);
+    representative[v] = inserted.first->second;
+    if(inserted.second)
+    {
+      compact[v] = distinct.size();
+      distinct.push_back(points[v]);
+    }
+  }
+  out.dropped_vertices = points.size() - referenced_count;
+  out.merged_duplicates = referenced_count - distinct.size();
+
+  // Faces that collapse to fewer than three corners have no normal: left out.
+  std::vector<std::vector<std::size_t>> faces;
+  for(const auto& polygon : polygons)
+  {
+    std::vector<std::size_t> face;
+    for(std::size_t v : polygon)
+    {
+      const std::size_t c = compact[representative[v]];
+      if(std::find(face.begin(), face.end(), c) == face.end())
+        face.push_back(c);
+    }
+    if(face.size() >= 3)
+      faces.push_back(std::move(face));
+  }
+  if(faces.empty())
+    throw Input_error("no face with three distinct corners");
+  // Non-manifold or inconsistently oriented faces: CGAL orients them, splitting vertices where needed;
+  // the split copies share a position and are merged again below.
+  if(!PMP::is_polygon_soup_a_polygon_mesh(faces))
+    PMP::orient_polygon_soup(distinct, faces);
+  if(!PMP::is_polygon_soup_a_polygon_mesh(faces))
+    throw Input_error("the faces do not form a polygon mesh, even after orientation");
+  CGAL::Surface_mesh<Point_3> mesh;
+  PMP::polygon_soup_to_polygon_mesh(distinct, faces, mesh);
+
+  const auto mesh_points = internal::mesh_points(mesh, CGAL::parameters::default_values());
+  // Vertices of `distinct` used by no kept face are isolated in `mesh`.
+  out.dropped_vertices += mesh_points.summary.dropped_vertices();
+  for(std::size_t i = 0; i < mesh_points.input.size(); ++i)
+  {
+    const auto& p = mesh_points.input.points[i];
+    const auto& n = mesh_points.input.normals[i];
+    out.points.emplace_back(p.x(), p.y(), p.z());
+    out.normals.emplace_back(n[0], n[1], n[2]);
+  }
+}
+
+inline void merge_duplicate_points(Oriented_point_set& out, bool has_normals)
+{
+  std::map<std::array<double, 3>, std::size_t> seen;
+  std::size_t kept = 0;
+  for(std::size_t i = 0; i < out.points.size(); ++i)
+  {
+    const auto& p = out.points[i];
+    if(!seen.emplace(std::array<double, 3>{{p.x(), p.y(), p.z()}}, i).second)
+      continue;
+    out.points[kept] = out.points[i];
+    if(has_normals)
+      out.normals[kept] = out.normals[i];
+    ++kept;
+  }
+  out.merged_duplicates = out.points.size() - kept;
+  out.points.resize(kept);
+  if(has_normals)
+    out.normals.resize(kept);
+}
+
+// Jet fitting and MST orientation (CGAL's Point_set_processing_3), in input order.
+inline void estimate_normals(Oriented_point_set& out, unsigned int neighbors)
+{
+  typedef std::tuple<Oriented_point_set::Point_3, Oriented_point_set::Vector_3, std::size_t> Item;
+  std::vector<Item> items;
+  for(std::size_t i = 0; i < out.points.size(); ++i)
+    items.emplace_back(out.points[i], CGAL::NULL_VECTOR, i);
+  const auto np = CGAL::parameters::point_map(CGAL::Nth_of_tuple_property_map<0, Item>())
+                    .normal_map(CGAL::Nth_of_tuple_property_map<1, Item>());
+  CGAL::jet_estimate_normals<CGAL::Sequential_tag>(items, neighbors, np);
+  const auto unoriented = CGAL::mst_orient_normals(items, neighbors, np);
+  out.unoriented_normals = std::size_t(std::distance(unoriented, items.end()));
+  std::sort(items.begin(), items.end(), [](const Item& x, const Item& y) { return std::get<2>(x) < std::get<2>(y); });
+  out.normals.clear();
+  for(const Item& item : items)
+    out.normals.push_back(std::get<1>(item));
+  out.normals_estimated = true;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  \brief reads a mesh (OFF, PLY, OBJ, STL) or a point set (XYZ/PWN lines `x y z [nx ny nz]`,
+  PLY with or without `nx ny nz`, OFF without faces) into distinct points with oriented unit normals,
+  as SPEC §1 prescribes.
+
+  Meshes: one point per vertex that has a face, its normal from
+  `Polygon_mesh_processing::compute_vertex_normals()` (inconsistent orientations are repaired by
+  `orient_polygon_soup()` first); vertices at one position merged, the first kept.
+  Point sets: duplicates merged, the first kept; without normals, normals are estimated by jet
+  fitting and oriented by a minimum spanning tree over `estimation_neighbors` neighbors.
+
+  \throws Input_error with a one-line message on anything unusable: a missing, unreadable or empty
+  file, an unknown extension, a syntax error, non-finite coordinates, zero or non-finite normals,
+  no points.
+*/
+inline Oriented_point_set read_oriented_point_set(const std::string& filename, unsigned int estimation_neighbors = 18)
+{
+  typedef Oriented_point_set::Point_3 Point_3;
+  typedef Oriented_point_set::Vector_3 Vector_3;
+  Oriented_point_set out;
+  const std::string ext = internal::lower_extension(filename);
+  {
+    std::ifstream probe(filename, std::ios::binary | std::ios::ate);
+    if(!probe)
+      throw Input_error("cannot open the file");
+    if(probe.tellg() == std::streampos(0))
+      throw Input_error("the file is empty");
+  }
+  if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl" && ext != "xyz" && ext != "pwn")
+    throw Input_error("unknown format '" + (ext.empty() ? std::string("(no extension)") : "." + ext) +
+                      "': expected .off, .obj, .ply, .stl, .xyz or .pwn");
+
+  bool has_normals = false;
+  if(ext == "xyz" || ext == "pwn")
+    internal::read_xyz(filename, out.points, out.normals, has_normals);
+  else
+  {
+    std::vector<Point_3> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    const bool soup_read = internal::read_soup(filename, ext, points, polygons);
+    if(soup_read && !polygons.empty())
+    {
+      internal::mesh_to_points(points, polygons, out);
+      return out;
+    }
+    if(ext == "obj" || ext == "stl")
+      throw Input_error(soup_read ? "no faces in the file" : "cannot parse the file as " + ext);
+    // OFF or PLY without faces: a point set, maybe with normals.
+    CGAL::Point_set_3<Point_3, Vector_3> point_set;
+    if(!CGAL::IO::read_point_set(filename, point_set))
+      throw Input_error("cannot parse the file as " + ext);
+    has_normals = point_set.has_normal_map();
+    for(auto it = point_set.begin(); it != point_set.end(); ++it)
+    {
+      out.points.push_back(point_set.point(*it));
+      if(has_normals)
+        out.normals.push_back(point_set.normal(*it));
+    }
+  }
+
+  out.input_vertices = out.points.size();
+  if(out.points.empty())
+    throw Input_error("no points in the file");
+  for(std::size_t i = 0; i < out.points.size(); ++i)
+  {
+    if(!internal::is_finite(out.points[i]))
+      throw Input_error("point " + std::to_string(i) + " has a non-finite coordinate");
+    if(has_normals)
+    {
+      const Vector_3& n = out.normals[i];
+      const double squared_norm = n.squared_length();
+      if(!std::isfinite(squared_norm))
+        throw Input_error("point " + std::to_string(i) + " has a non-finite normal");
+      if(!(squared_norm > 0.))
+        throw Input_error("point " + std::to_string(i) + " has a zero normal");
+      if(std::abs(squared_norm - 1.) > 1e-12)
+        out.normals[i] = n / std::sqrt(squared_norm);
+    }
+  }
+  internal::merge_duplicate_points(out, has_normals);
+  if(!has_normals)
+  {
+    if(out.points.size() < 3)
+      throw Input_error("too few distinct points (" + std::to_string(out.points.size()) + ") to estimate normals");
+    internal::estimate_normals(out, (std::min)(estimation_neighbors, unsigned(out.points.size() - 1)));
+  }
+  return out;
+}
+
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_READ_ORIENTED_POINT_SET_H

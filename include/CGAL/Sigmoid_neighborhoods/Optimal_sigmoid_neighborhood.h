@@ -1,0 +1,39 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_OPTIMAL_SIGMOID_NEIGHBORHOOD_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_OPTIMAL_SIGMOID_NEIGHBORHOOD_H
+
+#include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>
+
+#include <limits>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  the result of the optimal parameter search at one point (the paper's Equation 9).
+
+  When every triple fails, `k == 0`, `a` and `b` are NaN and `features.error` is `+inf`:
+  the point is a *failure*.
+*/
+struct Optimal_sigmoid_neighborhood
+{
+  double a = std::numeric_limits<double>::quiet_NaN(); ///< `a*`, radians
+  double b = std::numeric_limits<double>::quiet_NaN(); ///< `b*`, radians
+  unsigned int k = 0;                                  ///< `k*`, 0 for a failure
+  Dimensionality_features features;                    ///< at `(a*, b*, k*)`
+  double error_equal = std::numeric_limits<double>::infinity(); ///< least `E_dim` with equal weights
+  unsigned int k_equal = 0;                                     ///< its `k`, 0 when all fail
+
+  double error() const { return features.error; } ///< `E_dim` at the optimum, `+inf` for a failure
+  bool is_failure() const { return k == 0; }
+};
+
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_OPTIMAL_SIGMOID_NEIGHBORHOOD_H

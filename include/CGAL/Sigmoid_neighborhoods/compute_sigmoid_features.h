@@ -1,0 +1,119 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_COMPUTE_SIGMOID_FEATURES_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_COMPUTE_SIGMOID_FEATURES_H
+
+#include <CGAL/Sigmoid_neighborhoods/parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
+#include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Local_neighborhood.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/mesh_points.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <vector>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+template <typename ConcurrencyTag>
+std::vector<Dimensionality_features> features_all(const Oriented_points& input, const Cosine_sigmoid& sigmoid,
+                                                  unsigned int k, Barycenter barycenter)
+{
+  if(k < 1)
+    throw std::invalid_argument("the neighborhood size k must be at least 1");
+  check_enough_points(input.size(), k);
+  const K_neighbor_query query(input.points);
+  std::vector<Dimensionality_features> result(input.size());
+  struct Scratch
+  {
+    std::vector<Neighbor> neighbors;
+    Local_neighborhood local;
+    std::vector<double> weights;
+  };
+  for_each_index<ConcurrencyTag>(
+    input.size(), [] { return Scratch(); },
+    [&](std::size_t i, Scratch& s) {
+      query.query(static_cast<std::uint32_t>(i), k, s.neighbors);
+      s.local.assign(input, static_cast<std::uint32_t>(i), s.neighbors);
+      s.weights.resize(s.local.size());
+      s.local.weights(sigmoid, s.weights.data());
+      result[i] = s.local.features(s.weights.data(), k, barycenter);
+    });
+  return result;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  \brief computes the dimensionality features (eigenvalues, linearity, planarity, scattering,
+  `E_dim`, label) of every point for one fixed sigmoid `(a, b)` and neighborhood size `k`.
+
+  The angle tolerance is the one of `sigmoid`. A degenerate neighborhood gives a record with
+  `error = +inf` and the label `Dimensionality::DEGENERATE`.
+
+  \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag`
+  \tparam OutputIterator an output iterator accepting `Dimensionality_features`
+  \param np optional: `point_map`, `normal_map` (required), `geom_traits` (CGAL), and `barycenter`
+  \pre at least `k + 1` points, `k >= 1`; finite coordinates; non-zero finite normals
+       (otherwise `std::invalid_argument`)
+*/
+template <typename ConcurrencyTag, typename PointRange, typename OutputIterator,
+          typename CGAL_NP_TEMPLATE_PARAMETERS>
+OutputIterator compute_sigmoid_features(const PointRange& points, const Cosine_sigmoid& sigmoid, unsigned int k,
+                                        OutputIterator output,
+                                        const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
+  static_assert(NP_helper::has_normal_map(), "compute_sigmoid_features() needs a normal map");
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto input = internal::copy_oriented_points(points, NP_helper::get_const_point_map(points, np),
+                                                    NP_helper::get_normal_map(points, np));
+  const Barycenter barycenter = choose_parameter(get_parameter(np, internal_np::barycenter), Barycenter::WEIGHTED);
+  for(const Dimensionality_features& f : internal::features_all<ConcurrencyTag>(input, sigmoid, k, barycenter))
+    *output++ = f;
+  return output;
+}
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  \brief the same features on the vertices of a `Surface_mesh`, with the vertex handling of
+  `compute_optimal_sigmoid_neighborhoods()`; left-out vertices get a degenerate record.
+  \tparam VertexFeatureMap a `WritablePropertyMap` from vertex descriptors to `Dimensionality_features`
+  \param np optional: `vertex_normal_map` (CGAL) and `barycenter`
+*/
+template <typename ConcurrencyTag, typename Point, typename VertexFeatureMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Mesh_points_summary compute_sigmoid_features(const CGAL::Surface_mesh<Point>& mesh, const Cosine_sigmoid& sigmoid,
+                                             unsigned int k, VertexFeatureMap vertex_features,
+                                             const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto mesh_points = internal::mesh_points(mesh, np);
+  const Barycenter barycenter = choose_parameter(get_parameter(np, internal_np::barycenter), Barycenter::WEIGHTED);
+  const auto features = internal::features_all<ConcurrencyTag>(mesh_points.input, sigmoid, k, barycenter);
+  for(auto v : mesh.vertices())
+  {
+    const std::uint32_t i = mesh_points.point_of_vertex[std::size_t(v)];
+    put(vertex_features, v, i == internal::NO_POINT ? Dimensionality_features() : features[i]);
+  }
+  return mesh_points.summary;
+}
+
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_COMPUTE_SIGMOID_FEATURES_H

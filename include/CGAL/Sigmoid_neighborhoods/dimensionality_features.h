@@ -1,0 +1,115 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_DIMENSIONALITY_FEATURES_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_DIMENSIONALITY_FEATURES_H
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  the dimensionality label of a point: the largest of linearity, planarity and scattering
+  (ties to the first), or `DEGENERATE` when the covariance matrix vanishes.
+*/
+enum class Dimensionality
+{
+  LINEAR,
+  PLANAR,
+  SCATTERED,
+  DEGENERATE
+};
+
+/// the name used in files: `linear`, `planar`, `scattered` or `degenerate`.
+inline const char* dimensionality_name(Dimensionality d)
+{
+  switch(d)
+  {
+    case Dimensionality::LINEAR: return "linear";
+    case Dimensionality::PLANAR: return "planar";
+    case Dimensionality::SCATTERED: return "scattered";
+    default: return "degenerate";
+  }
+}
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  the eigenvalue features of one weighted neighborhood (the paper's Section 4).
+  A degenerate neighborhood has `error = +inf`, all other values 0 and the label `DEGENERATE`.
+*/
+struct Dimensionality_features
+{
+  std::array<double, 3> eigenvalues{{0., 0., 0.}}; ///< `lambda1 >= lambda2 >= lambda3 >= 0`
+  double linearity = 0.;                          ///< `(lambda1 - lambda2) / lambda1`
+  double planarity = 0.;                          ///< `(lambda2 - lambda3) / lambda1`
+  double scattering = 0.;                         ///< `lambda3 / lambda1`
+  double error = std::numeric_limits<double>::infinity(); ///< `E_dim`, in `[0, ln 3]`
+  Dimensionality label = Dimensionality::DEGENERATE;
+
+  bool is_degenerate() const { return label == Dimensionality::DEGENERATE; }
+};
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  the Shannon entropy `E_dim = -L ln L - P ln P - S ln S`, with `0 ln 0 = 0`.
+*/
+inline double dimensionality_error(double linearity, double planarity, double scattering)
+{
+  auto term = [](double x) { return x > 0. ? -x * std::log(x) : 0.; };
+  return term(linearity) + term(planarity) + term(scattering);
+}
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  the features of eigenvalues `lambda1 >= lambda2 >= lambda3` (negative values from rounding
+  are clamped to 0). Returns a degenerate record when `lambda1 <= 0`.
+*/
+inline Dimensionality_features dimensionality_features_from_eigenvalues(double lambda1, double lambda2,
+                                                                        double lambda3)
+{
+  Dimensionality_features f;
+  lambda1 = (std::max)(lambda1, 0.);
+  lambda2 = (std::max)(lambda2, 0.);
+  lambda3 = (std::max)(lambda3, 0.);
+  if(!(lambda1 > 0.))
+    return f;
+  f.eigenvalues = {{lambda1, lambda2, lambda3}};
+  f.linearity = (lambda1 - lambda2) / lambda1;
+  f.planarity = (lambda2 - lambda3) / lambda1;
+  f.scattering = lambda3 / lambda1;
+  f.error = dimensionality_error(f.linearity, f.planarity, f.scattering);
+  f.label = Dimensionality::LINEAR;
+  if(f.planarity > f.linearity)
+    f.label = Dimensionality::PLANAR;
+  if(f.scattering > (std::max)(f.linearity, f.planarity))
+    f.label = Dimensionality::SCATTERED;
+  return f;
+}
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  the features of a symmetric positive semi-definite 3x3 matrix (only its lower triangle is read).
+  The eigenvalues come from Eigen's iterative `SelfAdjointEigenSolver::compute()`, accurate to about
+  `1e-12 lambda1` even when two eigenvalues nearly coincide, which closed-form solvers are not (SPEC §4).
+*/
+inline Dimensionality_features dimensionality_features(const Eigen::Matrix3d& covariance)
+{
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+  solver.compute(covariance, Eigen::EigenvaluesOnly);
+  const Eigen::Vector3d& ev = solver.eigenvalues(); // ascending
+  return dimensionality_features_from_eigenvalues(ev[2], ev[1], ev[0]);
+}
+
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_DIMENSIONALITY_FEATURES_H

@@ -1,0 +1,104 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_SEARCH_SETTINGS_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_SEARCH_SETTINGS_H
+
+#include <CGAL/Sigmoid_neighborhoods/parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  the default grid of `a` and `b`: `{0, pi/6, pi/3, pi/2, 2pi/3, 5pi/6, pi}` (SPEC §5).
+*/
+inline std::vector<double> default_angle_grid()
+{
+  std::vector<double> grid;
+  for(int i = 0; i <= 6; ++i)
+    grid.push_back(i == 6 ? internal::PI : i * internal::PI / 6.);
+  return grid;
+}
+
+/// The default smallest and largest `k` (SPEC §5).
+constexpr unsigned int DEFAULT_K_MIN = 6;
+constexpr unsigned int DEFAULT_K_MAX = 20;
+
+namespace internal {
+
+struct Search_settings
+{
+  std::vector<double> a_grid, b_grid;
+  unsigned int k_min = DEFAULT_K_MIN, k_max = DEFAULT_K_MAX;
+  Barycenter barycenter = Barycenter::WEIGHTED;
+  double angle_tolerance = DEFAULT_ANGLE_TOLERANCE;
+
+  // The (a, b) pairs with a <= b, a ascending then b ascending: the visiting order of SPEC §5.
+  std::vector<Cosine_sigmoid> sigmoids() const
+  {
+    std::vector<Cosine_sigmoid> result;
+    for(double a : a_grid)
+      for(double b : b_grid)
+        if(a <= b)
+          result.emplace_back(a, b, angle_tolerance);
+    return result;
+  }
+
+  unsigned int number_of_sizes() const { return k_max - k_min + 1; }
+};
+
+inline std::vector<double> checked_grid(std::vector<double> grid, const char* name)
+{
+  for(double v : grid)
+    if(!(v >= 0. && v <= PI))
+      throw std::invalid_argument(std::string(name) + " grid values must lie in [0, pi], got " + std::to_string(v));
+  std::sort(grid.begin(), grid.end());
+  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+  if(grid.empty())
+    throw std::invalid_argument(std::string(name) + " grid is empty");
+  return grid;
+}
+
+template <typename NamedParameters>
+Search_settings search_settings(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Search_settings s;
+  s.k_min = choose_parameter(get_parameter(np, internal_np::k_min), DEFAULT_K_MIN);
+  s.k_max = choose_parameter(get_parameter(np, internal_np::k_max), DEFAULT_K_MAX);
+  s.a_grid = checked_grid(choose_parameter(get_parameter(np, internal_np::a_grid), default_angle_grid()), "a");
+  s.b_grid = checked_grid(choose_parameter(get_parameter(np, internal_np::b_grid), default_angle_grid()), "b");
+  s.barycenter = choose_parameter(get_parameter(np, internal_np::barycenter), Barycenter::WEIGHTED);
+  s.angle_tolerance = choose_parameter(get_parameter(np, internal_np::angle_tolerance), DEFAULT_ANGLE_TOLERANCE);
+  if(!(s.k_min >= 1 && s.k_min <= s.k_max))
+    throw std::invalid_argument("the neighborhood sizes must satisfy 1 <= k_min <= k_max, got k_min = " +
+                                std::to_string(s.k_min) + ", k_max = " + std::to_string(s.k_max));
+  if(!(s.angle_tolerance >= 0. && s.angle_tolerance < PI))
+    throw std::invalid_argument("angle tolerance must be in [0, pi), got " + std::to_string(s.angle_tolerance));
+  if(s.a_grid.front() > s.b_grid.back())
+    throw std::invalid_argument("the a and b grids have no pair with a <= b");
+  return s;
+}
+
+inline void check_enough_points(std::size_t n, unsigned int k_max)
+{
+  if(n < std::size_t(k_max) + 1)
+    throw std::invalid_argument("needs at least k_max + 1 = " + std::to_string(k_max + 1) +
+                                " points, got " + std::to_string(n));
+}
+
+} // namespace internal
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_SEARCH_SETTINGS_H

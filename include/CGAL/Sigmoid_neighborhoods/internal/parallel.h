@@ -1,0 +1,60 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_PARALLEL_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_PARALLEL_H
+
+#include <CGAL/tags.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <type_traits>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  `CGAL::Parallel_tag` when the package can run in parallel (OpenMP or TBB), otherwise
+  `CGAL::Sequential_tag`. CGAL's own alias only knows TBB.
+*/
+#if defined(_OPENMP) || defined(CGAL_LINKED_WITH_TBB)
+typedef CGAL::Parallel_tag Parallel_if_available_tag;
+#else
+typedef CGAL::Sequential_tag Parallel_if_available_tag;
+#endif
+
+namespace internal {
+
+// Runs `body(i, scratch)` for i in [0, n), with one `Scratch` per thread built by
+// `make_scratch()`. Every index is processed by one call whose result depends on `i` only,
+// so the outcome is the same, bit for bit, for any number of threads. `body` must not throw.
+template <typename ConcurrencyTag, typename MakeScratch, typename Body>
+void for_each_index(std::size_t n, const MakeScratch& make_scratch, const Body& body)
+{
+#if defined(_OPENMP)
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+  {
+    const std::int64_t count = static_cast<std::int64_t>(n);
+#pragma omp parallel
+    {
+      auto scratch = make_scratch();
+#pragma omp for schedule(dynamic, 64)
+      for(std::int64_t i = 0; i < count; ++i)
+        body(static_cast<std::size_t>(i), scratch);
+    }
+    return;
+  }
+#endif
+  auto scratch = make_scratch();
+  for(std::size_t i = 0; i < n; ++i)
+    body(i, scratch);
+}
+
+} // namespace internal
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_PARALLEL_H

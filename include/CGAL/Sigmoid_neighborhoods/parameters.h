@@ -1,0 +1,62 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_PARAMETERS_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_PARAMETERS_H
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  selects the barycenter `c_i` of the covariance matrix (SPEC §4).
+*/
+enum class Barycenter
+{
+  WEIGHTED,  ///< `c_i = sum w_ij p_j / sum w_ij` (default: the paper's degenerate cases need it)
+  UNWEIGHTED ///< `c_i = (1 / |N_i|) sum p_j`, the paper's literal formula
+};
+
+// CGAL 5.5 generates chainable members only for its own tags, so ours are free
+// functions returning a CGAL pack: our parameters first, CGAL's chained after,
+// e.g. `parameters::k_max(12).point_map(pm)`. The two-argument form pushes a
+// value on top of an existing pack: `parameters::k_min(8, parameters::k_max(12))`.
+#define CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(TAG, NAME)                                  \
+  namespace internal_np {                                                                          \
+  enum TAG { NAME };                                                                               \
+  }                                                                                                \
+  namespace parameters {                                                                           \
+  template <typename T>                                                                            \
+  CGAL::Named_function_parameters<T, internal_np::TAG> NAME(const T& value)                        \
+  {                                                                                                \
+    return CGAL::Named_function_parameters<T, internal_np::TAG>(value);                            \
+  }                                                                                                \
+  template <typename T, typename NP_T, typename NP_Tag, typename NP_Base>                          \
+  CGAL::Named_function_parameters<T, internal_np::TAG,                                             \
+                                  CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >         \
+  NAME(const T& value, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np)           \
+  {                                                                                                \
+    return CGAL::Named_function_parameters<                                                        \
+      T, internal_np::TAG, CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >(value, np);    \
+  }                                                                                                \
+  }
+
+/// \cond SKIP_IN_MANUAL
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(k_min_t, k_min)
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(k_max_t, k_max)
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(a_grid_t, a_grid)
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(b_grid_t, b_grid)
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(barycenter_t, barycenter)
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(angle_tolerance_t, angle_tolerance)
+/// \endcond
+
+#undef CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER
+
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_PARAMETERS_H

@@ -1,0 +1,278 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The sigmoid, the weighted covariance and the eigenvalue features on analytic cases.
+
+#include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
+#include <CGAL/Sigmoid_neighborhoods/weighted_covariance.h>
+#include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace SN = CGAL::Sigmoid_neighborhoods;
+typedef CGAL::Simple_cartesian<double>::Point_3 Point;
+
+static const double pi = SN::internal::PI;
+
+TEST_CASE("sigmoid below, at and above a and b", "[sigmoid]")
+{
+  const SN::Cosine_sigmoid s(pi / 6, pi / 2);
+  CHECK(s(0.) == 1.);
+  CHECK(s(pi / 6 - 1e-3) == 1.);
+  CHECK(s(pi / 6) == 1.);                          // x = a: cos(0) / 2 + 1/2
+  CHECK(s(pi / 3) == Approx(0.5).epsilon(1e-15)); // middle of the band
+  CHECK(s(pi / 6 + (pi / 3) / 4) == Approx(0.5 * std::cos(pi / 4) + 0.5).epsilon(1e-15));
+  CHECK(s(pi / 2) == Approx(0.).margin(1e-16));   // x = b: cos(pi) / 2 + 1/2
+  CHECK(s(pi / 2 + 1e-9) == 0.);
+  CHECK(s(pi) == 0.);
+}
+
+TEST_CASE("sigmoid is monotone and C1 across the band", "[sigmoid]")
+{
+  const SN::Cosine_sigmoid s(0.2, 1.7);
+  double previous = 1.;
+  for(int i = 0; i <= 1000; ++i)
+  {
+    const double w = s(pi * i / 1000.);
+    CHECK(w <= previous);
+    CHECK(w >= 0.);
+    previous = w;
+  }
+  // one-sided slopes at a and b vanish
+  CHECK((s(0.2 + 1e-6) - s(0.2)) / 1e-6 == Approx(0.).margin(1e-5));
+  CHECK((s(1.7) - s(1.7 - 1e-6)) / 1e-6 == Approx(0.).margin(1e-5));
+}
+
+TEST_CASE("sharp cut-off a = b keeps x = a", "[sigmoid]")
+{
+  const double c = std::acos(0.9);
+  const SN::Cosine_sigmoid s(c, c);
+  CHECK(s(c - 1e-12) == 1.);
+  CHECK(s(c) == 1.);
+  CHECK(s(std::nextafter(c, 4.)) == 0.);
+  CHECK(s(pi) == 0.);
+}
+
+TEST_CASE("equal weights a = b = pi and a = b = 0", "[sigmoid]")
+{
+  const SN::Cosine_sigmoid equal(pi, pi);
+  CHECK(equal.is_equal_weights());
+  for(double x : {0., 1., 3., pi})
+    CHECK(equal(x) == 1.);
+  const SN::Cosine_sigmoid zero(0., 0.);
+  CHECK(zero(0.) == 1.);
+  CHECK(zero(1e-7) == 1.);  // within the default angle tolerance 1e-6
+  CHECK(zero(2e-6) == 0.);
+  const SN::Cosine_sigmoid strict(0., 0., 0.);
+  CHECK(strict(1e-7) == 0.);
+  CHECK(strict(0.) == 1.);
+}
+
+TEST_CASE("sigmoid rejects invalid parameters", "[sigmoid][bad-input]")
+{
+  CHECK_THROWS_AS(SN::Cosine_sigmoid(0.5, 0.4), std::invalid_argument);
+  CHECK_THROWS_AS(SN::Cosine_sigmoid(-0.1, 0.4), std::invalid_argument);
+  CHECK_THROWS_AS(SN::Cosine_sigmoid(0.1, 3.2), std::invalid_argument);
+  CHECK_THROWS_AS(SN::Cosine_sigmoid(std::nan(""), 1.), std::invalid_argument);
+  CHECK_THROWS_AS(SN::Cosine_sigmoid(0.1, 1., -1e-3), std::invalid_argument);
+}
+
+TEST_CASE("dot-product form equals the angle form bit for bit", "[sigmoid]")
+{
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(-1., 1.);
+  const std::vector<double> grid = {0., pi / 6, pi / 3, pi / 2, 2 * pi / 3, 5 * pi / 6, pi, std::acos(0.9)};
+  std::size_t compared = 0;
+  for(double a : grid)
+    for(double b : grid)
+    {
+      if(a > b)
+        continue;
+      const SN::Cosine_sigmoid s(a, b);
+      std::vector<double> cosines = {1., -1., 0., std::cos(a), std::cos(b), std::nextafter(1., 0.),
+                                     std::cos(a) + 1e-9, std::cos(b) - 1e-9, std::cos(1e-6), std::cos(2e-6)};
+      for(int i = 0; i < 2000; ++i)
+        cosines.push_back(unit(rng));
+      for(double c : cosines)
+      {
+        const double x = std::acos(std::clamp(c, -1., 1.));
+        CHECK(s.weight_from_cosine(c) == s(x));
+        ++compared;
+      }
+    }
+  CHECK(compared > 50000);
+}
+
+TEST_CASE("weights are symmetric", "[sigmoid]")
+{
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> g;
+  const SN::Cosine_sigmoid s(pi / 6, 2 * pi / 3);
+  for(int i = 0; i < 1000; ++i)
+  {
+    Eigen::Vector3d n(g(rng), g(rng), g(rng)), m(g(rng), g(rng), g(rng));
+    n.normalize();
+    m.normalize();
+    CHECK(s(SN::normal_angle(n, m)) == s(SN::normal_angle(m, n)));
+  }
+}
+
+TEST_CASE("collinear points: L = 1, E = 0", "[features]")
+{
+  std::vector<Point> points;
+  for(int i = 0; i < 7; ++i)
+    points.emplace_back(1. + 0.5 * i, 2. + 0.25 * i, -1. + i);
+  for(auto bary : {SN::Barycenter::WEIGHTED, SN::Barycenter::UNWEIGHTED})
+  {
+    const auto cov = SN::weighted_covariance(points, std::vector<double>(7, 1.), bary);
+    const auto f = SN::dimensionality_features(cov);
+    CHECK(f.linearity == Approx(1.).margin(1e-14));
+    CHECK(f.error == Approx(0.).margin(1e-13));
+    CHECK(f.label == SN::Dimensionality::LINEAR);
+  }
+}
+
+TEST_CASE("regular disk: lambda1 = lambda2, E = 0, planar", "[features]")
+{
+  std::vector<Point> points = {Point(0.5, -0.25, 2.)};
+  for(int i = 0; i < 12; ++i)
+    points.emplace_back(0.5 + std::cos(2 * pi * i / 12), -0.25 + std::sin(2 * pi * i / 12), 2.);
+  const auto cov = SN::weighted_covariance(points, std::vector<double>(13, 1.));
+  const auto f = SN::dimensionality_features(cov);
+  // sum of cos^2 over 12 equally spaced angles = 6
+  CHECK(f.eigenvalues[0] == Approx(6.).epsilon(1e-13));
+  CHECK(f.eigenvalues[1] == Approx(6.).epsilon(1e-13));
+  CHECK(f.eigenvalues[2] == Approx(0.).margin(1e-13));
+  CHECK(f.error == Approx(0.).margin(1e-12));
+  CHECK(f.planarity == Approx(1.).margin(1e-13));
+  CHECK(f.label == SN::Dimensionality::PLANAR);
+}
+
+TEST_CASE("cube corner: three edges give three equal eigenvalues", "[features]")
+{
+  // the corner and two points on each of the three edges, equal weights, unweighted or not:
+  // the covariance is symmetric under permutation of the axes
+  std::vector<Point> points = {Point(0, 0, 0)};
+  for(double t : {1., 2.})
+  {
+    points.emplace_back(t, 0, 0);
+    points.emplace_back(0, t, 0);
+    points.emplace_back(0, 0, t);
+  }
+  const auto f = SN::dimensionality_features(SN::weighted_covariance(points, std::vector<double>(7, 1.)));
+  // centre (3/7)(1,1,1): diagonal 5 - 9/7, off-diagonal -9/7, so the eigenvalues are
+  // 5 (twice, across the diagonal) and 5 - 27/7 = 8/7 (along (1,1,1))
+  CHECK(f.eigenvalues[0] == Approx(5.).epsilon(1e-13));
+  CHECK(f.eigenvalues[1] == Approx(5.).epsilon(1e-13));
+  CHECK(f.eigenvalues[2] == Approx(8. / 7.).epsilon(1e-13));
+  CHECK(f.planarity == Approx(1. - 8. / 35.).epsilon(1e-13));
+  CHECK(f.label == SN::Dimensionality::PLANAR);
+  // with a sharp cut-off keeping one edge only, the corner neighborhood becomes linear
+  const auto line = SN::dimensionality_features(
+    SN::weighted_covariance(points, std::vector<double>{1., 1., 0., 0., 1., 0., 0.}));
+  CHECK(line.linearity == Approx(1.).margin(1e-14));
+  CHECK(line.error == Approx(0.).margin(1e-13));
+}
+
+TEST_CASE("equal eigenvalues (rho, rho, rho) give E = 0 and scattered", "[features]")
+{
+  const auto f = SN::dimensionality_features_from_eigenvalues(2., 2., 2.);
+  CHECK(f.error == 0.);
+  CHECK(f.scattering == 1.);
+  CHECK(f.label == SN::Dimensionality::SCATTERED);
+  CHECK(SN::dimensionality_features_from_eigenvalues(3., 0., 0.).error == 0.);
+  CHECK(SN::dimensionality_features_from_eigenvalues(3., 3., 0.).error == 0.);
+  CHECK(SN::dimensionality_features_from_eigenvalues(3., 3., -1e-18).scattering == 0.); // clamped
+  CHECK(SN::dimensionality_features_from_eigenvalues(0., 0., 0.).is_degenerate());
+  // E is largest, ln 3, for L = P = S = 1/3: eigenvalues (3, 2, 1)
+  CHECK(SN::dimensionality_features_from_eigenvalues(3., 2., 1.).error == Approx(std::log(3.)).epsilon(1e-15));
+}
+
+TEST_CASE("label ties go to the first of linear, planar, scattered", "[features]")
+{
+  // L = P = 1/2, S = 0
+  CHECK(SN::dimensionality_features_from_eigenvalues(2., 1., 0.).label == SN::Dimensionality::LINEAR);
+  // P = S = 1/2, L = 0
+  CHECK(SN::dimensionality_features_from_eigenvalues(2., 2., 1.).label == SN::Dimensionality::PLANAR);
+  // L = S = 1/2, P = 0
+  CHECK(SN::dimensionality_features_from_eigenvalues(2., 1., 1.).label == SN::Dimensionality::LINEAR);
+}
+
+TEST_CASE("L + P + S = 1 and 0 <= E <= ln 3 on random neighborhoods", "[features]")
+{
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1., 1.), w01(0., 1.);
+  for(int trial = 0; trial < 2000; ++trial)
+  {
+    std::vector<Point> points;
+    std::vector<double> weights;
+    const int m = 3 + trial % 18;
+    for(int j = 0; j < m; ++j)
+    {
+      points.emplace_back(u(rng) * (1 + trial % 3), u(rng), u(rng) * 0.01 * (trial % 5));
+      weights.push_back(j == 0 ? 1. : w01(rng));
+    }
+    for(auto bary : {SN::Barycenter::WEIGHTED, SN::Barycenter::UNWEIGHTED})
+    {
+      const auto f = SN::dimensionality_features(SN::weighted_covariance(points, weights, bary));
+      REQUIRE_FALSE(f.is_degenerate());
+      CHECK(f.linearity + f.planarity + f.scattering == Approx(1.).epsilon(1e-14));
+      CHECK(f.error >= 0.);
+      CHECK(f.error <= std::log(3.) + 1e-15);
+      CHECK(f.eigenvalues[0] >= f.eigenvalues[1]);
+      CHECK(f.eigenvalues[1] >= f.eigenvalues[2]);
+      CHECK(f.eigenvalues[2] >= 0.);
+    }
+  }
+}
+
+TEST_CASE("degenerate cases of SPEC 4 with both barycenters", "[features][degenerate]")
+{
+  const std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(1, 1, 0.1)};
+  SECTION("all weights zero")
+  {
+    // cannot happen through the sigmoid (w_ii = 1) but the covariance must still say so
+    for(auto bary : {SN::Barycenter::WEIGHTED, SN::Barycenter::UNWEIGHTED})
+    {
+      const auto cov = SN::weighted_covariance(points, std::vector<double>(4, 0.), bary);
+      CHECK(cov.weight_sum == 0.);
+      CHECK(cov.is_degenerate());
+      CHECK(SN::dimensionality_features(cov).error == std::numeric_limits<double>::infinity());
+    }
+  }
+  SECTION("flipped normal or too small b: only the point itself keeps weight")
+  {
+    const std::vector<double> w = {1., 0., 0., 0.};
+    const auto weighted = SN::weighted_covariance(points, w, SN::Barycenter::WEIGHTED);
+    CHECK(weighted.trace() == 0.);
+    CHECK(weighted.is_degenerate());
+    CHECK(SN::dimensionality_features(weighted).label == SN::Dimensionality::DEGENERATE);
+    // the literal formula keeps C != 0 through the point's offset from the plain mean
+    const auto unweighted = SN::weighted_covariance(points, w, SN::Barycenter::UNWEIGHTED);
+    CHECK(unweighted.trace() == Approx(0.5 + 0.025 * 0.025).epsilon(1e-14)); // |p_i - mean|^2
+    CHECK_FALSE(unweighted.is_degenerate());
+    CHECK(SN::dimensionality_features(unweighted).error == Approx(0.).margin(1e-13)); // rank one
+  }
+  SECTION("duplicates: all points at one position")
+  {
+    const std::vector<Point> same(5, Point(0.3, 0.3, 0.3));
+    for(auto bary : {SN::Barycenter::WEIGHTED, SN::Barycenter::UNWEIGHTED})
+    {
+      const auto cov = SN::weighted_covariance(same, std::vector<double>(5, 1.), bary);
+      CHECK(cov.squared_radius == 0.);
+      CHECK(cov.is_degenerate());
+    }
+  }
+  SECTION("relative threshold: a trace at 1e-13 of the radius is degenerate, at 1e-11 it is not")
+  {
+    // two heavy points at the centre, one far point with a tiny weight
+    const std::vector<Point> p = {Point(0, 0, 0), Point(0, 0, 0), Point(1, 0, 0)};
+    CHECK(SN::weighted_covariance(p, std::vector<double>{1., 1., 1e-13}).is_degenerate());
+    CHECK_FALSE(SN::weighted_covariance(p, std::vector<double>{1., 1., 1e-11}).is_degenerate());
+  }
+}

@@ -1,0 +1,465 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Neighborhoods, the optimal search and the fixed-triple features on point ranges and meshes,
+// against a plain reference loop written here from SPEC.md.
+
+#include "test_models.h"
+
+#include <CGAL/Sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/K_neighbor_query.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/property_map.h>
+#include <CGAL/Random.h>
+
+#include <catch2/catch.hpp>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <map>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace SN = CGAL::Sigmoid_neighborhoods;
+namespace SNP = CGAL::Sigmoid_neighborhoods::parameters;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+typedef std::pair<Point_3, Vector_3> Point_with_normal;
+typedef std::vector<Point_with_normal> Point_list;
+typedef CGAL::First_of_pair_property_map<Point_with_normal> Point_map;
+typedef CGAL::Second_of_pair_property_map<Point_with_normal> Normal_map;
+
+static const double pi = SN::internal::PI;
+static const double inf = std::numeric_limits<double>::infinity();
+
+static auto maps() { return CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()); }
+
+static Point_list mesh_point_list(const Mesh& mesh)
+{
+  std::map<Mesh::Vertex_index, Vector_3> normals;
+  PMP::compute_vertex_normals(mesh, boost::make_assoc_property_map(normals));
+  Point_list result;
+  for(auto v : mesh.vertices())
+    result.emplace_back(mesh.point(v), normals[v]);
+  return result;
+}
+
+// A noisy, curved patch with a crease: enough variety for every grid value to matter.
+static Point_list folded_sheet(int n, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> noise(0., 0.01);
+  Point_list result;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+    {
+      const double x = double(i) / n - 0.5, y = double(j) / n - 0.5;
+      const double z = 0.4 * std::abs(x) + 0.2 * y * y + noise(rng);
+      Vector_3 normal(x < 0 ? 0.4 : -0.4, -0.4 * y, 1.);
+      normal = normal + Vector_3(noise(rng), noise(rng), noise(rng)) * 5.;
+      result.emplace_back(Point_3(x + noise(rng), y + noise(rng), z), normal);
+    }
+  return result;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The plain reference: brute-force neighbors, every triple through the public covariance.
+
+static std::vector<std::size_t> brute_force_neighborhood(const Point_list& points, std::size_t i, unsigned k)
+{
+  std::vector<std::size_t> order;
+  for(std::size_t j = 0; j < points.size(); ++j)
+    if(j != i)
+      order.push_back(j);
+  auto d2 = [&](std::size_t j) {
+    const double dx = points[j].first.x() - points[i].first.x();
+    const double dy = points[j].first.y() - points[i].first.y();
+    const double dz = points[j].first.z() - points[i].first.z();
+    return dx * dx + dy * dy + dz * dz;
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return d2(a) < d2(b); });
+  order.resize(k);
+  order.insert(order.begin(), i);
+  return order;
+}
+
+static SN::Dimensionality_features plain_features(const Point_list& points, std::size_t i, double a, double b,
+                                                  unsigned k, SN::Barycenter bary)
+{
+  const SN::Cosine_sigmoid sigmoid(a, b);
+  const auto hood = brute_force_neighborhood(points, i, k);
+  std::vector<Point_3> ps;
+  std::vector<double> ws;
+  Eigen::Vector3d ni(points[i].second.x(), points[i].second.y(), points[i].second.z());
+  ni.normalize();
+  for(std::size_t j : hood)
+  {
+    Eigen::Vector3d nj(points[j].second.x(), points[j].second.y(), points[j].second.z());
+    nj.normalize();
+    ps.push_back(points[j].first);
+    ws.push_back(sigmoid(SN::normal_angle(ni, nj)));
+  }
+  return SN::dimensionality_features(SN::weighted_covariance(ps, ws, bary));
+}
+
+static SN::Optimal_sigmoid_neighborhood plain_optimal(const Point_list& points, std::size_t i, SN::Barycenter bary)
+{
+  SN::Optimal_sigmoid_neighborhood best;
+  const auto grid = SN::default_angle_grid();
+  for(double a : grid)
+    for(double b : grid)
+    {
+      if(a > b)
+        continue;
+      for(unsigned k = 6; k <= 20; ++k)
+      {
+        const auto f = plain_features(points, i, a, b, k, bary);
+        if(f.error < best.error() - 1e-12)
+        {
+          best.a = a;
+          best.b = b;
+          best.k = k;
+          best.features = f;
+        }
+        if(a == pi && b == pi && f.error < best.error_equal - 1e-12)
+        {
+          best.error_equal = f.error;
+          best.k_equal = k;
+        }
+      }
+    }
+  return best;
+}
+
+static bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }
+
+static bool same_record(const SN::Optimal_sigmoid_neighborhood& r, const SN::Optimal_sigmoid_neighborhood& s)
+{
+  return same_bits(r.a, s.a) && same_bits(r.b, s.b) && r.k == s.k && same_bits(r.error(), s.error()) &&
+         same_bits(r.features.linearity, s.features.linearity) &&
+         same_bits(r.features.planarity, s.features.planarity) &&
+         same_bits(r.features.scattering, s.features.scattering) && r.features.label == s.features.label &&
+         same_bits(r.error_equal, s.error_equal) && r.k_equal == s.k_equal;
+}
+
+static std::vector<SN::Optimal_sigmoid_neighborhood> optimal(const Point_list& points,
+                                                             SN::Barycenter bary = SN::Barycenter::WEIGHTED)
+{
+  std::vector<SN::Optimal_sigmoid_neighborhood> result;
+  SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(
+    points, std::back_inserter(result), SNP::barycenter(bary).point_map(Point_map()).normal_map(Normal_map()));
+  return result;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+TEST_CASE("k nearest neighbors are ordered by distance, ties by index", "[neighbors]")
+{
+  // a regular grid is full of ties
+  std::vector<SN::internal::Double_point> points;
+  for(int i = 0; i < 9; ++i)
+    for(int j = 0; j < 9; ++j)
+      points.emplace_back(i, j, 0.);
+  // shuffle indices so that index order is not the grid order
+  std::mt19937_64 rng(5);
+  std::shuffle(points.begin(), points.end(), rng);
+  const SN::internal::K_neighbor_query query(points);
+  std::vector<SN::internal::Neighbor> found;
+  for(std::uint32_t i = 0; i < points.size(); ++i)
+    for(unsigned k : {1u, 4u, 8u, 12u, 20u})
+    {
+      query.query(i, k, found);
+      std::vector<std::uint32_t> expected;
+      for(std::uint32_t j = 0; j < points.size(); ++j)
+        if(j != i)
+          expected.push_back(j);
+      auto d2 = [&](std::uint32_t j) { return CGAL::squared_distance(points[i], points[j]); };
+      std::stable_sort(expected.begin(), expected.end(),
+                       [&](std::uint32_t a, std::uint32_t b) { return d2(a) < d2(b); });
+      REQUIRE(found.size() == k);
+      for(unsigned t = 0; t < k; ++t)
+        CHECK(found[t].index == expected[t]);
+    }
+}
+
+TEST_CASE("optimal search equals the plain loop over all 420 triples", "[optimal]")
+{
+  const Point_list points = folded_sheet(15, 1);
+  for(auto bary : {SN::Barycenter::WEIGHTED, SN::Barycenter::UNWEIGHTED})
+  {
+    const auto fast = optimal(points, bary);
+    REQUIRE(fast.size() == points.size());
+    std::size_t first_pair = 0, checked = 0;
+    for(std::size_t i = 0; i < points.size(); i += 3, ++checked)
+    {
+      const auto plain = plain_optimal(points, i, bary);
+      CHECK(same_record(fast[i], plain));
+      first_pair += (fast[i].a == 0. && fast[i].b == 0.);
+    }
+    if(bary == SN::Barycenter::WEIGHTED)
+      CHECK(first_pair < checked / 2); // the noisy normals exercise the whole grid
+    else
+      CHECK(first_pair == checked); // SPEC 4: the lone point gives a rank-one matrix, E = 0
+  }
+}
+
+TEST_CASE("fixed triple features equal the optimal record at its own triple", "[features][optimal]")
+{
+  const Point_list points = folded_sheet(12, 2);
+  const auto records = optimal(points);
+  for(std::size_t i = 0; i < points.size(); i += 7)
+  {
+    const auto& r = records[i];
+    REQUIRE_FALSE(r.is_failure());
+    std::vector<SN::Dimensionality_features> features;
+    SN::compute_sigmoid_features<CGAL::Sequential_tag>(points, SN::Cosine_sigmoid(r.a, r.b), r.k,
+                                                       std::back_inserter(features), maps());
+    CHECK(same_bits(features[i].error, r.error()));
+    CHECK(same_bits(features[i].linearity, r.features.linearity));
+    CHECK(features[i].label == r.features.label);
+  }
+}
+
+TEST_CASE("a plane: every pair gives the same weights, ties go to a = b = 0", "[optimal][ties]")
+{
+  Point_list points;
+  for(int i = 0; i < 10; ++i)
+    for(int j = 0; j < 10; ++j)
+      points.emplace_back(Point_3(0.1 * i + 0.013 * (j % 3), 0.1 * j + 0.007 * (i % 4), 1.), Vector_3(0, 0, 2));
+  for(const auto& r : optimal(points))
+  {
+    CHECK(r.a == 0.);
+    CHECK(r.b == 0.);
+    CHECK(same_bits(r.error(), r.error_equal));
+    CHECK(r.k == r.k_equal);
+    CHECK(r.features.scattering == Approx(0.).margin(1e-12));
+  }
+}
+
+TEST_CASE("a line: every triple has E = 0, so the first triple (0, 0, k_min) wins", "[optimal][ties]")
+{
+  Point_list points;
+  for(int i = 0; i < 40; ++i)
+    points.emplace_back(Point_3(0.5 * i, 0.25 * i, 3.), Vector_3(0, 0, 1));
+  for(const auto& r : optimal(points))
+  {
+    CHECK(r.a == 0.);
+    CHECK(r.b == 0.);
+    CHECK(r.k == 6);
+    CHECK(r.k_equal == 6);
+    CHECK(r.error() == Approx(0.).margin(1e-12));
+    CHECK(r.features.label == SN::Dimensionality::LINEAR);
+  }
+}
+
+TEST_CASE("a flipped normal fails for a = b = 0 but not for equal weights", "[degenerate]")
+{
+  Point_list points = folded_sheet(8, 3);
+  points[27].second = -points[27].second;
+  std::vector<SN::Dimensionality_features> cut, cut_unweighted, equal;
+  SN::compute_sigmoid_features<CGAL::Sequential_tag>(points, SN::Cosine_sigmoid(0., pi / 2), 10,
+                                                     std::back_inserter(cut), maps());
+  SN::compute_sigmoid_features<CGAL::Sequential_tag>(
+    points, SN::Cosine_sigmoid(0., pi / 2), 10, std::back_inserter(cut_unweighted),
+    SNP::barycenter(SN::Barycenter::UNWEIGHTED).point_map(Point_map()).normal_map(Normal_map()));
+  SN::compute_sigmoid_features<CGAL::Sequential_tag>(points, SN::Cosine_sigmoid(pi, pi), 10,
+                                                     std::back_inserter(equal), maps());
+  CHECK(cut[27].is_degenerate());
+  CHECK(cut[27].error == inf);
+  CHECK_FALSE(cut_unweighted[27].is_degenerate()); // the literal formula never vanishes
+  CHECK_FALSE(equal[27].is_degenerate());
+  const auto records = optimal(points);
+  CHECK_FALSE(records[27].is_failure());
+  CHECK(records[27].b > pi / 2);
+}
+
+TEST_CASE("more duplicates than k: every triple fails, the point is a failure", "[degenerate]")
+{
+  Point_list points;
+  for(int i = 0; i < 25; ++i)
+    points.emplace_back(Point_3(1, 1, 1), Vector_3(0, 0, 1));
+  for(int i = 0; i < 30; ++i)
+    points.emplace_back(Point_3(5 + i, 2. * (i % 2), 0.3 * (i % 5)), Vector_3(0, 0, 1));
+  for(auto bary : {SN::Barycenter::WEIGHTED, SN::Barycenter::UNWEIGHTED})
+  {
+    const auto records = optimal(points, bary);
+    for(int i = 0; i < 25; ++i)
+    {
+      CHECK(records[i].is_failure());
+      CHECK(records[i].error() == inf);
+      CHECK(std::isnan(records[i].a));
+      CHECK(records[i].k_equal == 0);
+      CHECK(records[i].error_equal == inf);
+      CHECK(records[i].features.label == SN::Dimensionality::DEGENERATE);
+    }
+    CHECK_FALSE(records[40].is_failure());
+  }
+}
+
+TEST_CASE("named parameters: explicit defaults equal the defaults, grids and sizes are honoured", "[parameters]")
+{
+  const Point_list points = folded_sheet(9, 4);
+  const auto defaults = optimal(points);
+  std::vector<SN::Optimal_sigmoid_neighborhood> explicit_defaults, narrow;
+  SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(
+    points, std::back_inserter(explicit_defaults),
+    SNP::k_min(6u, SNP::k_max(20u, SNP::a_grid(SN::default_angle_grid(), SNP::b_grid(SN::default_angle_grid(),
+      SNP::angle_tolerance(1e-6, SNP::barycenter(SN::Barycenter::WEIGHTED)))))).point_map(Point_map()).normal_map(Normal_map()));
+  for(std::size_t i = 0; i < points.size(); ++i)
+    CHECK(same_record(defaults[i], explicit_defaults[i]));
+
+  // a grid without pi: the equal-weights baseline is still computed, and only grid values come out
+  SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(
+    points, std::back_inserter(narrow),
+    SNP::k_min(8u, SNP::k_max(10u, SNP::a_grid(std::vector<double>{0.5, 0.1}, SNP::b_grid(std::vector<double>{1.0, 0.5}))))
+      .point_map(Point_map()).normal_map(Normal_map()));
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    if(narrow[i].is_failure())
+      continue;
+    CHECK((narrow[i].a == 0.1 || narrow[i].a == 0.5));
+    CHECK((narrow[i].b == 0.5 || narrow[i].b == 1.0));
+    CHECK(narrow[i].k >= 8);
+    CHECK(narrow[i].k <= 10);
+    CHECK(narrow[i].k_equal >= 8);
+    CHECK(narrow[i].k_equal <= 10);
+    CHECK(narrow[i].error_equal == Approx(plain_features(points, i, pi, pi, narrow[i].k_equal,
+                                                          SN::Barycenter::WEIGHTED).error).epsilon(0));
+  }
+}
+
+TEST_CASE("bad input throws std::invalid_argument with a message", "[bad-input]")
+{
+  Point_list points = folded_sheet(6, 5);
+  std::vector<SN::Optimal_sigmoid_neighborhood> out;
+  auto run = [&](const Point_list& p) {
+    SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(p, std::back_inserter(out), maps());
+  };
+  Point_list nan_point = points;
+  nan_point[3].first = Point_3(std::nan(""), 0, 0);
+  CHECK_THROWS_WITH(run(nan_point), Catch::Contains("point 3") && Catch::Contains("non-finite"));
+  Point_list zero_normal = points;
+  zero_normal[4].second = CGAL::NULL_VECTOR;
+  CHECK_THROWS_WITH(run(zero_normal), Catch::Contains("point 4") && Catch::Contains("zero normal"));
+  Point_list inf_normal = points;
+  inf_normal[5].second = Vector_3(inf, 0, 0);
+  CHECK_THROWS_AS(run(inf_normal), std::invalid_argument);
+  CHECK_THROWS_WITH(run(Point_list(points.begin(), points.begin() + 20)), Catch::Contains("at least"));
+  CHECK_NOTHROW(run(Point_list(points.begin(), points.begin() + 21)));
+  CHECK_THROWS_AS(run(Point_list()), std::invalid_argument);
+  CHECK_THROWS_AS(SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(
+                    points, std::back_inserter(out), SNP::k_min(9u, SNP::k_max(8u)).point_map(Point_map()).normal_map(Normal_map())),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(
+                    points, std::back_inserter(out), SNP::a_grid(std::vector<double>{4.}).point_map(Point_map()).normal_map(Normal_map())),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(
+                    points, std::back_inserter(out),
+                    SNP::a_grid(std::vector<double>{2.}, SNP::b_grid(std::vector<double>{1.})).point_map(Point_map()).normal_map(Normal_map())),
+                  std::invalid_argument);
+}
+
+TEST_CASE("point range and Surface_mesh give the same numbers", "[mesh]")
+{
+  Mesh cube = make_grid_cube(4, 0.25);
+  const Point_list points = mesh_point_list(cube);
+  const auto from_range = optimal(points);
+  auto records = cube.add_property_map<Mesh::Vertex_index, SN::Optimal_sigmoid_neighborhood>("v:optimal").first;
+  const auto summary = SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(cube, records);
+  CHECK(summary.vertices == 98);
+  CHECK(summary.points == 98);
+  CHECK(summary.merged_duplicates == 0);
+  CHECK(summary.dropped_vertices() == 0);
+  std::size_t i = 0, edges = 0, corners = 0;
+  for(auto v : cube.vertices())
+  {
+    CHECK(same_record(records[v], from_range[i]));
+    ++i;
+  }
+  // fixed triple on the mesh equals the range version
+  auto features = cube.add_property_map<Mesh::Vertex_index, SN::Dimensionality_features>("v:features").first;
+  SN::compute_sigmoid_features<CGAL::Sequential_tag>(cube, SN::Cosine_sigmoid(0., pi / 3), 12, features);
+  std::vector<SN::Dimensionality_features> range_features;
+  SN::compute_sigmoid_features<CGAL::Sequential_tag>(points, SN::Cosine_sigmoid(0., pi / 3), 12,
+                                                     std::back_inserter(range_features), maps());
+  i = 0;
+  for(auto v : cube.vertices())
+  {
+    CHECK(same_bits(features[v].error, range_features[i].error));
+    const Point_3& p = cube.point(v);
+    const int on_border = (p.x() == 0 || p.x() == 1) + (p.y() == 0 || p.y() == 1) + (p.z() == 0 || p.z() == 1);
+    const auto& r = records[v];
+    if(on_border == 2)
+    {
+      // a sharp edge: the cut-off a = b = 0 keeps the edge vertices only, a line
+      ++edges;
+      CHECK(r.a == 0.);
+      CHECK(r.b == 0.);
+      CHECK(r.k == 6);
+      CHECK(r.error() == Approx(0.).margin(1e-12));
+      CHECK(r.features.label == SN::Dimensionality::LINEAR);
+      CHECK(r.error_equal > 0.5);
+    }
+    if(on_border == 3)
+    {
+      // the cube's symmetry: all corners alike, and better than equal weights
+      ++corners;
+      CHECK(r.error() == Approx(records[*cube.vertices().begin()].error()).epsilon(1e-12));
+      CHECK(r.error() < r.error_equal);
+    }
+    ++i;
+  }
+  CHECK(edges == 12 * 3);
+  CHECK(corners == 8);
+}
+
+TEST_CASE("Surface_mesh: duplicate vertices are merged, isolated vertices left out", "[mesh]")
+{
+  Mesh cube = make_grid_cube(3, 1.);
+  const std::size_t n = cube.number_of_vertices();
+  // a separate triangle whose corners repeat three cube vertices, and one isolated vertex
+  auto v0 = cube.add_vertex(Point_3(0, 0, 0));
+  auto v1 = cube.add_vertex(Point_3(1, 0, 0));
+  auto v2 = cube.add_vertex(Point_3(0, 1, 0));
+  cube.add_face(v0, v1, v2);
+  auto lonely = cube.add_vertex(Point_3(9, 9, 9));
+  auto records = cube.add_property_map<Mesh::Vertex_index, SN::Optimal_sigmoid_neighborhood>("v:optimal").first;
+  const auto summary = SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(cube, records);
+  CHECK(summary.vertices == n + 4);
+  CHECK(summary.points == n);
+  CHECK(summary.merged_duplicates == 3);
+  CHECK(summary.isolated_vertices == 1);
+  CHECK(records[lonely].is_failure());
+  for(auto v : cube.vertices())
+    if(v != v0 && v != v1 && v != v2 && cube.point(v) == cube.point(v0))
+      CHECK(same_record(records[v], records[v0]));
+}
+
+TEST_CASE("1 and 2 threads give bit-identical results", "[threads]")
+{
+  const Point_list points = folded_sheet(20, 6);
+  const auto sequential = optimal(points);
+#ifdef _OPENMP
+  for(int threads : {1, 2})
+  {
+    omp_set_num_threads(threads);
+    std::vector<SN::Optimal_sigmoid_neighborhood> parallel;
+    SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(points, std::back_inserter(parallel), maps());
+    REQUIRE(parallel.size() == sequential.size());
+    for(std::size_t i = 0; i < points.size(); ++i)
+      CHECK(same_record(parallel[i], sequential[i]));
+  }
+#else
+  WARN("built without OpenMP: only the sequential path is tested");
+#endif
+}

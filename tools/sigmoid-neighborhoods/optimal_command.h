@@ -1,0 +1,247 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// `sigmoid-neighborhoods optimal`: the optimal (a, b, k) of every point of one model, as CSV and PLY.
+
+#ifndef SIGMOID_NEIGHBORHOODS_TOOL_OPTIMAL_COMMAND_H
+#define SIGMOID_NEIGHBORHOODS_TOOL_OPTIMAL_COMMAND_H
+
+#include "command_line.h"
+
+#include <CGAL/Sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
+
+#include <CGAL/Point_set_3.h>
+#include <CGAL/Point_set_3/IO.h>
+#include <CGAL/Real_timer.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace sigmoid_tool {
+
+namespace SN = CGAL::Sigmoid_neighborhoods;
+
+inline const char* OPTIMAL_USAGE =
+  "usage: sigmoid-neighborhoods optimal INPUT -o OUT.csv [--ply OUT.ply] [--k-min 6] [--k-max 20]\n"
+  "         [--barycenter weighted|unweighted] [--angle-tolerance 1e-6] [--threads N]\n"
+  "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply; normals estimated when absent)\n";
+
+struct Search_options
+{
+  unsigned int k_min = SN::DEFAULT_K_MIN, k_max = SN::DEFAULT_K_MAX;
+  SN::Barycenter barycenter = SN::Barycenter::WEIGHTED;
+  double angle_tolerance = SN::DEFAULT_ANGLE_TOLERANCE;
+  int threads = 0; // 0: OpenMP's default
+};
+
+inline Search_options read_search_options(const Arguments& args)
+{
+  Search_options o;
+  o.k_min = args.get_unsigned("--k-min", o.k_min);
+  o.k_max = args.get_unsigned("--k-max", o.k_max);
+  if(o.k_min < 1 || o.k_min > o.k_max)
+    throw Usage_error("needs 1 <= --k-min <= --k-max");
+  const std::string bary = args.get("--barycenter", "weighted");
+  if(bary == "unweighted")
+    o.barycenter = SN::Barycenter::UNWEIGHTED;
+  else if(bary != "weighted")
+    throw Usage_error("--barycenter must be weighted or unweighted, got '" + bary + "'");
+  o.angle_tolerance = args.get_double("--angle-tolerance", o.angle_tolerance);
+  if(!(o.angle_tolerance >= 0. && o.angle_tolerance < 3.14159))
+    throw Usage_error("--angle-tolerance must be in [0, pi)");
+  o.threads = static_cast<int>(args.get_unsigned("--threads", 0));
+#ifdef _OPENMP
+  if(o.threads > 0)
+    omp_set_num_threads(o.threads);
+#endif
+  return o;
+}
+
+// Reads INPUT and checks that the search can run on it; Input_error carries the reason.
+inline SN::Oriented_point_set read_model(const std::string& path, unsigned int k_max)
+{
+  SN::Oriented_point_set model = SN::read_oriented_point_set(path);
+  if(model.points.size() < std::size_t(k_max) + 1)
+    throw SN::Input_error("needs at least k_max + 1 = " + std::to_string(k_max + 1) + " distinct points, got " +
+                          std::to_string(model.points.size()));
+  return model;
+}
+
+inline std::string model_description(const SN::Oriented_point_set& model)
+{
+  std::string s = std::to_string(model.points.size()) + " points (";
+  if(model.is_mesh)
+    s += "mesh vertex normals, " + std::to_string(model.dropped_vertices) + " dropped vertices, ";
+  else if(model.normals_estimated)
+    s += "normals estimated by jet fitting and MST orientation, " + std::to_string(model.unoriented_normals) +
+         " left unoriented, ";
+  else
+    s += "normals from the file, ";
+  s += std::to_string(model.merged_duplicates) + " merged duplicates)";
+  return s;
+}
+
+inline std::vector<SN::Optimal_sigmoid_neighborhood> optimal_search(const SN::Oriented_point_set& model,
+                                                                    const Search_options& o)
+{
+  namespace SNP = SN::parameters;
+  std::vector<std::uint32_t> indices(model.points.size());
+  for(std::size_t i = 0; i < indices.size(); ++i)
+    indices[i] = std::uint32_t(i);
+  std::vector<SN::Optimal_sigmoid_neighborhood> records;
+  records.reserve(model.points.size());
+  SN::compute_optimal_sigmoid_neighborhoods<SN::Parallel_if_available_tag>(
+    indices, std::back_inserter(records),
+    SNP::k_min(o.k_min, SNP::k_max(o.k_max, SNP::barycenter(o.barycenter, SNP::angle_tolerance(o.angle_tolerance))))
+      .point_map(CGAL::make_property_map(model.points))
+      .normal_map(CGAL::make_property_map(model.normals)));
+  return records;
+}
+
+// 17 significant digits: every double reads back to the same bits.
+inline void print_number(std::ostream& out, double v)
+{
+  char buffer[40];
+  std::snprintf(buffer, sizeof(buffer), "%.17g", v);
+  out << buffer;
+}
+
+inline void write_optimal_csv(std::ostream& out, const SN::Oriented_point_set& model,
+                              const std::vector<SN::Optimal_sigmoid_neighborhood>& records)
+{
+  out << "x,y,z,nx,ny,nz,a,b,k,error,linearity,planarity,scattering,label,error_equal,k_equal\n";
+  for(std::size_t i = 0; i < records.size(); ++i)
+  {
+    const auto& p = model.points[i];
+    const auto& n = model.normals[i];
+    const auto& r = records[i];
+    for(double v : {p.x(), p.y(), p.z(), n.x(), n.y(), n.z()})
+    {
+      print_number(out, v);
+      out << ',';
+    }
+    if(r.is_failure())
+      out << ",,,";
+    else
+    {
+      print_number(out, r.a);
+      out << ',';
+      print_number(out, r.b);
+      out << ',' << r.k << ',';
+    }
+    print_number(out, r.error());
+    out << ',';
+    if(!r.is_failure())
+    {
+      print_number(out, r.features.linearity);
+      out << ',';
+      print_number(out, r.features.planarity);
+      out << ',';
+      print_number(out, r.features.scattering);
+      out << ',';
+    }
+    else
+      out << ",,,";
+    out << SN::dimensionality_name(r.features.label) << ',';
+    print_number(out, r.error_equal);
+    out << ',';
+    if(r.k_equal != 0)
+      out << r.k_equal;
+    out << '\n';
+  }
+}
+
+// A binary PLY point cloud with the CSV's values as per-vertex properties (MeshLab, CloudCompare).
+// Failures have NaN a, b and features, k = 0 and error = inf; label: 0 linear, 1 planar,
+// 2 scattered, 3 degenerate.
+inline void write_optimal_ply(std::ostream& out, const SN::Oriented_point_set& model,
+                              const std::vector<SN::Optimal_sigmoid_neighborhood>& records)
+{
+  typedef CGAL::Point_set_3<SN::Oriented_point_set::Point_3, SN::Oriented_point_set::Vector_3> Point_set;
+  Point_set ps(true);
+  ps.reserve(records.size());
+  auto add_double = [&ps](const char* name) { return ps.add_property_map<double>(name, 0.).first; };
+  auto a = add_double("a"), b = add_double("b"), error = add_double("error");
+  auto linearity = add_double("linearity"), planarity = add_double("planarity"),
+       scattering = add_double("scattering"), error_equal = add_double("error_equal");
+  auto k = ps.add_property_map<std::int32_t>("k", 0).first;
+  auto k_equal = ps.add_property_map<std::int32_t>("k_equal", 0).first;
+  auto label = ps.add_property_map<std::uint8_t>("label", 0).first;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for(std::size_t i = 0; i < records.size(); ++i)
+  {
+    const auto& r = records[i];
+    auto it = ps.insert(model.points[i], model.normals[i]);
+    a[*it] = r.a;
+    b[*it] = r.b;
+    k[*it] = std::int32_t(r.k);
+    error[*it] = r.error();
+    linearity[*it] = r.is_failure() ? nan : r.features.linearity;
+    planarity[*it] = r.is_failure() ? nan : r.features.planarity;
+    scattering[*it] = r.is_failure() ? nan : r.features.scattering;
+    label[*it] = std::uint8_t(r.features.label);
+    error_equal[*it] = r.error_equal;
+    k_equal[*it] = std::int32_t(r.k_equal);
+  }
+  CGAL::IO::set_binary_mode(out);
+  if(!CGAL::IO::write_PLY(out, ps))
+    throw Usage_error("cannot write the PLY file");
+}
+
+inline int run_optimal(int argc, char** argv)
+{
+  const Arguments args(argc, argv, 2,
+                       {"-o", "--output", "--ply", "--k-min", "--k-max", "--barycenter", "--angle-tolerance", "--threads"},
+                       {"-h", "--help"});
+  if(args.has("-h") || args.has("--help"))
+  {
+    std::cout << OPTIMAL_USAGE;
+    return EXIT_OK;
+  }
+  if(args.positional().size() != 1)
+    throw Usage_error("optimal needs exactly one INPUT");
+  const std::string input = args.positional()[0];
+  const std::string csv = args.get("-o", args.get("--output"));
+  if(csv.empty())
+    throw Usage_error("optimal needs -o OUT.csv");
+  const std::string ply = args.get("--ply");
+  const Search_options options = read_search_options(args);
+
+  CGAL::Real_timer timer;
+  timer.start();
+  SN::Oriented_point_set model;
+  try
+  {
+    model = read_model(input, options.k_max);
+  }
+  catch(const SN::Input_error& e)
+  {
+    throw Usage_error(input + ": " + e.what());
+  }
+  const auto records = optimal_search(model, options);
+  std::size_t failures = 0;
+  for(const auto& r : records)
+    failures += r.is_failure();
+
+  write_file_atomically(csv, [&](std::ofstream& out) { write_optimal_csv(out, model, records); });
+  if(!ply.empty())
+    write_file_atomically(ply, [&](std::ofstream& out) { write_optimal_ply(out, model, records); }, true);
+  timer.stop();
+  char seconds[32];
+  std::snprintf(seconds, sizeof(seconds), "%.2f", timer.time());
+  std::cerr << input << ": " << model_description(model) << ", " << failures << " failures, " << seconds << " s\n";
+  return EXIT_OK;
+}
+
+} // namespace sigmoid_tool
+
+#endif // SIGMOID_NEIGHBORHOODS_TOOL_OPTIMAL_COMMAND_H
