@@ -311,8 +311,10 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename, u
       internal::mesh_to_points(points, polygons, out);
       return out;
     }
+    if(!soup_read)
+      throw Input_error("cannot parse the file as " + ext + (ext == "obj" ? " (or it has no faces)" : ""));
     if(ext == "obj" || ext == "stl")
-      throw Input_error(soup_read ? "no faces in the file" : "cannot parse the file as " + ext);
+      throw Input_error("no faces in the file");
     // OFF or PLY without faces: a point set, maybe with normals.
     CGAL::Point_set_3<Point_3, Vector_3> point_set;
     if(!CGAL::IO::read_point_set(filename, point_set))
