@@ -5,6 +5,8 @@
 
 #include "command_line.h"
 #include "optimal_command.h"
+#include "evaluate_command.h"
+#include "report_command.h"
 
 #include <exception>
 #include <iostream>
@@ -16,6 +18,9 @@ const char* USAGE =
   "usage: sigmoid-neighborhoods COMMAND [ARGS]\n"
   "commands:\n"
   "  optimal   the optimal sigmoid weights and neighborhood size (a*, b*, k*) of every point\n"
+  "  evaluate  the statistics of the paper's Section 5 over a repository of models (shardable)\n"
+  "  merge     merges the evaluation folders of shards\n"
+  "  report    Tables 2 and 3 (Markdown) and Figures 3-6 (PNG) of evaluation folders\n"
   "run 'sigmoid-neighborhoods COMMAND --help' for the options of a command\n";
 
 } // namespace
@@ -33,6 +38,12 @@ int main(int argc, char** argv)
   {
     if(command == "optimal")
       return run_optimal(argc, argv);
+    if(command == "evaluate")
+      return run_evaluate(argc, argv);
+    if(command == "merge")
+      return run_merge(argc, argv);
+    if(command == "report")
+      return run_report(argc, argv);
     if(command == "-h" || command == "--help" || command == "help")
     {
       std::cout << USAGE;

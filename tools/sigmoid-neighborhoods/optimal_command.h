@@ -67,9 +67,10 @@ inline Search_options read_search_options(const Arguments& args)
 }
 
 // Reads INPUT and checks that the search can run on it; Input_error carries the reason.
-inline SN::Oriented_point_set read_model(const std::string& path, unsigned int k_max)
+// Without `estimate_normals`, a point set without normals comes back with no normals.
+inline SN::Oriented_point_set read_model(const std::string& path, unsigned int k_max, bool estimate_normals = true)
 {
-  SN::Oriented_point_set model = SN::read_oriented_point_set(path);
+  SN::Oriented_point_set model = SN::read_oriented_point_set(path, estimate_normals ? 18 : 0);
   if(model.points.size() < std::size_t(k_max) + 1)
     throw SN::Input_error("needs at least k_max + 1 = " + std::to_string(k_max + 1) + " distinct points, got " +
                           std::to_string(model.points.size()));
@@ -115,47 +116,51 @@ inline void print_number(std::ostream& out, double v)
   out << buffer;
 }
 
-inline void write_optimal_csv(std::ostream& out, const SN::Oriented_point_set& model,
-                              const std::vector<SN::Optimal_sigmoid_neighborhood>& records)
+const char* const OPTIMAL_CSV_HEADER =
+  "x,y,z,nx,ny,nz,a,b,k,error,linearity,planarity,scattering,label,error_equal,k_equal";
+
+// One row of the optimal CSV, without the line end.
+inline void write_optimal_row(std::ostream& out, const SN::Oriented_point_set::Point_3& p,
+                              const SN::Oriented_point_set::Vector_3& n, const SN::Optimal_sigmoid_neighborhood& r)
 {
-  out << "x,y,z,nx,ny,nz,a,b,k,error,linearity,planarity,scattering,label,error_equal,k_equal\n";
-  for(std::size_t i = 0; i < records.size(); ++i)
+  for(double v : {p.x(), p.y(), p.z(), n.x(), n.y(), n.z()})
   {
-    const auto& p = model.points[i];
-    const auto& n = model.normals[i];
-    const auto& r = records[i];
-    for(double v : {p.x(), p.y(), p.z(), n.x(), n.y(), n.z()})
+    print_number(out, v);
+    out << ',';
+  }
+  if(r.is_failure())
+    out << ",,,";
+  else
+  {
+    print_number(out, r.a);
+    out << ',';
+    print_number(out, r.b);
+    out << ',' << r.k << ',';
+  }
+  print_number(out, r.error());
+  out << ',';
+  if(!r.is_failure())
+    for(double v : {r.features.linearity, r.features.planarity, r.features.scattering})
     {
       print_number(out, v);
       out << ',';
     }
-    if(r.is_failure())
-      out << ",,,";
-    else
-    {
-      print_number(out, r.a);
-      out << ',';
-      print_number(out, r.b);
-      out << ',' << r.k << ',';
-    }
-    print_number(out, r.error());
-    out << ',';
-    if(!r.is_failure())
-    {
-      print_number(out, r.features.linearity);
-      out << ',';
-      print_number(out, r.features.planarity);
-      out << ',';
-      print_number(out, r.features.scattering);
-      out << ',';
-    }
-    else
-      out << ",,,";
-    out << SN::dimensionality_name(r.features.label) << ',';
-    print_number(out, r.error_equal);
-    out << ',';
-    if(r.k_equal != 0)
-      out << r.k_equal;
+  else
+    out << ",,,";
+  out << SN::dimensionality_name(r.features.label) << ',';
+  print_number(out, r.error_equal);
+  out << ',';
+  if(r.k_equal != 0)
+    out << r.k_equal;
+}
+
+inline void write_optimal_csv(std::ostream& out, const SN::Oriented_point_set& model,
+                              const std::vector<SN::Optimal_sigmoid_neighborhood>& records)
+{
+  out << OPTIMAL_CSV_HEADER << '\n';
+  for(std::size_t i = 0; i < records.size(); ++i)
+  {
+    write_optimal_row(out, model.points[i], model.normals[i], records[i]);
     out << '\n';
   }
 }

@@ -275,7 +275,8 @@ inline void estimate_normals(Oriented_point_set& out, unsigned int neighbors)
   `Polygon_mesh_processing::compute_vertex_normals()` (inconsistent orientations are repaired by
   `orient_polygon_soup()` first); vertices at one position merged, the first kept.
   Point sets: duplicates merged, the first kept; without normals, normals are estimated by jet
-  fitting and oriented by a minimum spanning tree over `estimation_neighbors` neighbors.
+  fitting and oriented by a minimum spanning tree over `estimation_neighbors` neighbors; with
+  `estimation_neighbors = 0` they are not estimated and `normals` comes back empty.
 
   \throws Input_error with a one-line message on anything unusable: a missing, unreadable or empty
   file, an unknown extension, a syntax error, non-finite coordinates, zero or non-finite normals,
@@ -348,6 +349,11 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename, u
     }
   }
   internal::merge_duplicate_points(out, has_normals);
+  if(!has_normals && estimation_neighbors == 0)
+  {
+    out.normals.clear();
+    return out;
+  }
   if(!has_normals)
   {
     if(out.points.size() < 3)

@@ -1,0 +1,170 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_EVALUATE_SIGMOID_NEIGHBORHOODS_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_EVALUATE_SIGMOID_NEIGHBORHOODS_H
+
+#include <CGAL/Sigmoid_neighborhoods/parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/Optimal_sigmoid_neighborhood.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Optimal_search.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  the outcome of lowering `a*` (or `b*`) to the next smaller grid value at the same `k*`:
+  the columns `a-` / `not a-` (`b-` / `not b-`) of the paper's Table 3.
+*/
+enum class Lowering
+{
+  AT_BOTTOM,  ///< `a* = 0` (column `a = 0`), or `b* = a*` (column `b = a`)
+  STILL_VALID,///< the lowered triple does not fail (`a-`, `b-`)
+  FAILS       ///< the lowered triple is degenerate (`not a-`, `not b-`)
+};
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  everything the evaluation of the paper's Section 5 needs at one point: the optimal triple with
+  the equal-weights baseline, the sharp cut-off `a = b = cut_off_angle` at its best `k`, equal
+  weights at a fixed `k`, and the Table 3 lowering tests.
+*/
+struct Point_evaluation
+{
+  Optimal_sigmoid_neighborhood optimal;                   ///< `(a*, b*, k*)` and equal weights at their best `k`
+  Dimensionality equal_label = Dimensionality::DEGENERATE; ///< the label with equal weights at `k_equal`
+  double error_cut_off = std::numeric_limits<double>::infinity(); ///< least `E_dim` of the cut-off over `K`
+  unsigned int k_cut_off = 0;                              ///< its `k`, 0 when it fails at every `k`
+  Dimensionality cut_off_label = Dimensionality::DEGENERATE;
+  double error_fixed_k = std::numeric_limits<double>::infinity(); ///< `E_dim` with equal weights at `fixed_k`
+  Dimensionality fixed_k_label = Dimensionality::DEGENERATE;
+  Lowering a_lowering = Lowering::AT_BOTTOM; ///< meaningless for a failure
+  Lowering b_lowering = Lowering::AT_BOTTOM; ///< meaningless for a failure
+};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// Best k of one fixed sigmoid over K with the tie rule of SPEC §5.
+inline void best_k(const Local_neighborhood& local, const Cosine_sigmoid& sigmoid, const Search_settings& s,
+                   std::vector<double>& w, double& error, unsigned int& k_best, Dimensionality& label)
+{
+  w.resize(local.size());
+  local.weights(sigmoid, w.data());
+  error = std::numeric_limits<double>::infinity();
+  k_best = 0;
+  for(unsigned int k = s.k_min; k <= s.k_max; ++k)
+  {
+    const double e = local.features(w.data(), k, s.barycenter).error;
+    if(e < error - TIE_TOLERANCE)
+    {
+      error = e;
+      k_best = k;
+    }
+  }
+  label = k_best == 0 ? Dimensionality::DEGENERATE : local.features(w.data(), k_best, s.barycenter).label;
+}
+
+inline bool is_degenerate_triple(const Local_neighborhood& local, double a, double b, unsigned int k,
+                                 const Search_settings& s, std::vector<double>& w)
+{
+  w.resize(local.size());
+  local.weights(Cosine_sigmoid(a, b, s.angle_tolerance), w.data());
+  return local.covariance(w.data(), k, s.barycenter).is_degenerate();
+}
+
+template <typename ConcurrencyTag>
+std::vector<Point_evaluation> evaluate_all(const Oriented_points& input, const Search_settings& settings,
+                                           double cut_off_angle, unsigned int fixed_k)
+{
+  check_enough_points(input.size(), settings.k_max);
+  if(!(fixed_k >= settings.k_min && fixed_k <= settings.k_max))
+    throw std::invalid_argument("fixed_k must lie in [k_min, k_max]");
+  const Cosine_sigmoid cut_off(cut_off_angle, cut_off_angle, settings.angle_tolerance);
+  const Cosine_sigmoid equal(PI, PI, settings.angle_tolerance);
+  const Optimal_search search(input, settings);
+  std::vector<Point_evaluation> result(input.size());
+  struct Scratch
+  {
+    Optimal_search::Scratch search;
+    std::vector<double> w;
+  };
+  for_each_index<ConcurrencyTag>(
+    input.size(), [&search] { return Scratch{search.make_scratch(), {}}; },
+    [&](std::size_t i, Scratch& s) {
+      Point_evaluation& e = result[i];
+      e.optimal = search(static_cast<std::uint32_t>(i), s.search);
+      const Local_neighborhood& local = s.search.local; // N_i(k_max) of point i, from the search
+      best_k(local, cut_off, settings, s.w, e.error_cut_off, e.k_cut_off, e.cut_off_label);
+      s.w.assign(local.size(), 1.);
+      if(e.optimal.k_equal != 0)
+        e.equal_label = local.features(s.w.data(), e.optimal.k_equal, settings.barycenter).label;
+      const Dimensionality_features fixed = local.features(s.w.data(), fixed_k, settings.barycenter);
+      e.error_fixed_k = fixed.error;
+      e.fixed_k_label = fixed.label;
+      if(e.optimal.is_failure())
+        return;
+      // Table 3: the next smaller grid value of a (same b*, k*), and of b that stays >= a* (same a*, k*).
+      const auto& A = settings.a_grid;
+      const auto& B = settings.b_grid;
+      const auto a_it = std::lower_bound(A.begin(), A.end(), e.optimal.a);
+      if(a_it != A.begin())
+        e.a_lowering = is_degenerate_triple(local, *(a_it - 1), e.optimal.b, e.optimal.k, settings, s.w)
+                         ? Lowering::FAILS : Lowering::STILL_VALID;
+      const auto b_it = std::lower_bound(B.begin(), B.end(), e.optimal.b);
+      if(e.optimal.b != e.optimal.a && b_it != B.begin() && *(b_it - 1) >= e.optimal.a)
+        e.b_lowering = is_degenerate_triple(local, e.optimal.a, *(b_it - 1), e.optimal.k, settings, s.w)
+                         ? Lowering::FAILS : Lowering::STILL_VALID;
+    });
+  return result;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  \brief evaluates every point as the paper's Section 5 does: the optimal `(a*, b*, k*)`, equal
+  weights and the sharp cut-off `a = b = cut_off_angle` each at their best `k`, equal weights at
+  `fixed_k`, and the Table 3 tests of lowering `a*` and `b*` by one grid step.
+
+  One k-NN query per point serves all of them. Results do not depend on the number of threads.
+
+  \param np the named parameters of `compute_optimal_sigmoid_neighborhoods()`, and
+    - `Sigmoid_neighborhoods::parameters::cut_off_angle` (default `acos(0.9)`),
+    - `Sigmoid_neighborhoods::parameters::fixed_k` (default `k_max`, within `[k_min, k_max]`).
+  \return the output iterator past the last `Point_evaluation`
+*/
+template <typename ConcurrencyTag, typename PointRange, typename OutputIterator,
+          typename CGAL_NP_TEMPLATE_PARAMETERS>
+OutputIterator evaluate_sigmoid_neighborhoods(const PointRange& points, OutputIterator output,
+                                              const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
+  static_assert(NP_helper::has_normal_map(), "evaluate_sigmoid_neighborhoods() needs a normal map");
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto input = internal::copy_oriented_points(points, NP_helper::get_const_point_map(points, np),
+                                                    NP_helper::get_normal_map(points, np));
+  const internal::Search_settings settings = internal::search_settings(np);
+  const double cut_off = choose_parameter(get_parameter(np, internal_np::cut_off_angle), std::acos(0.9));
+  const unsigned int fixed_k = choose_parameter(get_parameter(np, internal_np::fixed_k), settings.k_max);
+  for(const Point_evaluation& e : internal::evaluate_all<ConcurrencyTag>(input, settings, cut_off, fixed_k))
+    *output++ = e;
+  return output;
+}
+
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_EVALUATE_SIGMOID_NEIGHBORHOODS_H

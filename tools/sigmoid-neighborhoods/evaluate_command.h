@@ -1,0 +1,427 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// `sigmoid-neighborhoods evaluate` and `merge`: the paper's Section 5 over a repository of models,
+// on one machine or in shards.
+
+#ifndef SIGMOID_NEIGHBORHOODS_TOOL_EVALUATE_COMMAND_H
+#define SIGMOID_NEIGHBORHOODS_TOOL_EVALUATE_COMMAND_H
+
+#include "command_line.h"
+#include "evaluation_files.h"
+#include "optimal_command.h"
+
+#include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>
+#include <CGAL/Real_timer.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace sigmoid_tool {
+
+inline const char* EVALUATE_USAGE =
+  "usage: sigmoid-neighborhoods evaluate INPUTS... -o OUTDIR [--repository NAME] [--shard I/N] [--threads N]\n"
+  "         [--resume] [--per-point] [--only-with-normals] [--barycenter weighted|unweighted]\n"
+  "         [--k-min 6] [--k-max 20] [--fixed-k K_MAX] [--angle-tolerance 1e-6]\n"
+  "  INPUTS: model files or folders (searched recursively for .off .obj .ply .stl .xyz .pwn)\n"
+  "  --shard I/N: evaluate the I-th of N shares (1 <= I <= N), balanced by file size\n";
+
+inline const char* MERGE_USAGE = "usage: sigmoid-neighborhoods merge OUTDIR... -o OUTDIR [--repository NAME]\n";
+
+struct Model_file
+{
+  std::string name; // relative to its input root, '/'-separated
+  std::string path;
+  std::uintmax_t bytes = 0;
+};
+
+inline bool is_model_extension(const fs::path& p)
+{
+  std::string ext = p.extension().string();
+  for(char& c : ext)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".xyz" || ext == ".pwn";
+}
+
+inline std::vector<Model_file> find_models(const std::vector<std::string>& inputs)
+{
+  std::vector<Model_file> models;
+  for(const std::string& input : inputs)
+  {
+    const fs::path root(input);
+    std::error_code ec;
+    if(fs::is_directory(root, ec))
+    {
+      for(auto it = fs::recursive_directory_iterator(root, fs::directory_options::skip_permission_denied, ec);
+          it != fs::recursive_directory_iterator(); it.increment(ec))
+        if(it->is_regular_file(ec) && is_model_extension(it->path()))
+          models.push_back({fs::relative(it->path(), root).generic_string(), it->path().string(), it->file_size(ec)});
+    }
+    else if(fs::is_regular_file(root, ec))
+      models.push_back({root.filename().generic_string(), root.string(), fs::file_size(root, ec)});
+    else
+      throw Usage_error("no such file or folder: " + input);
+  }
+  std::sort(models.begin(), models.end(), [](const Model_file& x, const Model_file& y) { return x.name < y.name; });
+  for(std::size_t i = 1; i < models.size(); ++i)
+    if(models[i].name == models[i - 1].name)
+      throw Usage_error("two inputs give the same model name " + models[i].name + ": evaluate them separately");
+  return models;
+}
+
+// The I-th of N shares: models by decreasing size (then name) go to the lightest share so far.
+inline std::vector<Model_file> shard(const std::vector<Model_file>& models, unsigned int index, unsigned int count)
+{
+  std::vector<Model_file> order = models;
+  std::sort(order.begin(), order.end(), [](const Model_file& x, const Model_file& y) {
+    return x.bytes != y.bytes ? x.bytes > y.bytes : x.name < y.name;
+  });
+  std::vector<std::uintmax_t> load(count, 0);
+  std::vector<Model_file> mine;
+  for(const Model_file& m : order)
+  {
+    const std::size_t s = std::size_t(std::min_element(load.begin(), load.end()) - load.begin());
+    load[s] += m.bytes + 1;
+    if(s + 1 == index)
+      mine.push_back(m);
+  }
+  std::sort(mine.begin(), mine.end(), [](const Model_file& x, const Model_file& y) { return x.name < y.name; });
+  return mine;
+}
+
+// Models done of total, points per second and time left; a bar on a terminal, lines elsewhere.
+class Progress
+{
+public:
+  Progress(std::size_t models, std::uintmax_t bytes)
+    : m_total(models), m_bytes(bytes), m_terminal(::isatty(STDERR_FILENO)),
+      m_start(std::chrono::steady_clock::now())
+  {
+  }
+
+  void done(const std::string& name, std::size_t points, std::uintmax_t bytes, const std::string& outcome)
+  {
+    ++m_done;
+    m_points += points;
+    m_done_bytes += bytes;
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+    const double rate = seconds > 0. ? double(m_points) / seconds : 0.;
+    const double left = m_done_bytes > 0 ? seconds * double(m_bytes - m_done_bytes) / double(m_done_bytes) : 0.;
+    char line[256];
+    if(m_terminal)
+    {
+      const int width = 30, filled = m_total ? int(width * m_done / m_total) : width;
+      std::snprintf(line, sizeof(line), "\r[%-*s] %zu/%zu models, %.0f points/s, %s left   ",
+                    width, std::string(std::size_t(filled), '#').c_str(), m_done, m_total, rate,
+                    duration(left).c_str());
+      std::cerr << line << std::flush;
+      if(m_done == m_total)
+        std::cerr << '\n';
+    }
+    else
+    {
+      std::snprintf(line, sizeof(line), "[%zu/%zu] %s: %s (%.0f points/s, %s left)\n", m_done, m_total,
+                    name.c_str(), outcome.c_str(), rate, duration(left).c_str());
+      std::cerr << line << std::flush;
+    }
+  }
+
+  static std::string duration(double seconds)
+  {
+    char text[32];
+    const long s = long(seconds + 0.5);
+    if(s >= 3600)
+      std::snprintf(text, sizeof(text), "%ldh%02ldm", s / 3600, (s / 60) % 60);
+    else
+      std::snprintf(text, sizeof(text), "%ldm%02lds", s / 60, s % 60);
+    return text;
+  }
+
+private:
+  std::size_t m_total, m_done = 0, m_points = 0;
+  std::uintmax_t m_bytes, m_done_bytes = 0;
+  bool m_terminal;
+  std::chrono::steady_clock::time_point m_start;
+};
+
+inline std::vector<SN::Point_evaluation> evaluate_model(const SN::Oriented_point_set& model,
+                                                        const Search_options& o, const Evaluation_settings& s)
+{
+  namespace SNP = SN::parameters;
+  std::vector<std::uint32_t> indices(model.points.size());
+  for(std::size_t i = 0; i < indices.size(); ++i)
+    indices[i] = std::uint32_t(i);
+  std::vector<SN::Point_evaluation> result;
+  result.reserve(model.points.size());
+  SN::evaluate_sigmoid_neighborhoods<SN::Parallel_if_available_tag>(
+    indices, std::back_inserter(result),
+    SNP::k_min(o.k_min, SNP::k_max(o.k_max, SNP::barycenter(o.barycenter, SNP::angle_tolerance(o.angle_tolerance,
+      SNP::cut_off_angle(s.cut_off_angle, SNP::fixed_k(s.fixed_k))))))
+      .point_map(CGAL::make_property_map(model.points))
+      .normal_map(CGAL::make_property_map(model.normals)));
+  return result;
+}
+
+// The optimal CSV's columns, then the other weightings of the evaluation.
+inline void write_evaluation_csv(std::ostream& out, const SN::Oriented_point_set& model,
+                                 const std::vector<SN::Point_evaluation>& evaluations)
+{
+  out << OPTIMAL_CSV_HEADER << ",label_equal,error_cut_off,k_cut_off,label_cut_off,error_fixed_k,label_fixed_k\n";
+  for(std::size_t i = 0; i < evaluations.size(); ++i)
+  {
+    const SN::Point_evaluation& e = evaluations[i];
+    write_optimal_row(out, model.points[i], model.normals[i], e.optimal);
+    out << ',' << SN::dimensionality_name(e.equal_label) << ',';
+    print_number(out, e.error_cut_off);
+    out << ',';
+    if(e.k_cut_off != 0)
+      out << e.k_cut_off;
+    out << ',' << SN::dimensionality_name(e.cut_off_label) << ',';
+    print_number(out, e.error_fixed_k);
+    out << ',' << SN::dimensionality_name(e.fixed_k_label) << '\n';
+  }
+}
+
+inline Model_result model_result(const Model_file& file, const SN::Oriented_point_set& model,
+                                 const std::vector<SN::Point_evaluation>& evaluations, const Evaluation_settings& s)
+{
+  Model_result m;
+  m.model = file.name;
+  m.input_vertices = model.input_vertices;
+  m.merged_duplicates = model.merged_duplicates;
+  m.dropped_vertices = model.dropped_vertices;
+  m.unoriented_normals = model.unoriented_normals;
+  m.normals = model.is_mesh ? "mesh" : (model.normals_estimated ? "estimated" : "file");
+  m.statistics = SN::Evaluation_statistics(s.k_min, s.k_max, s.a_grid, s.b_grid);
+  for(const SN::Point_evaluation& e : evaluations)
+    m.statistics.add(e);
+  m.points = m.statistics.points;
+  m.k_standard_deviation = m.statistics.k_mean_and_deviation().second;
+  return m;
+}
+
+inline std::string iso_date()
+{
+  char text[64];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(text, sizeof(text), "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&now));
+  return text;
+}
+
+inline std::string host_name()
+{
+  char name[256] = {0};
+  ::gethostname(name, sizeof(name) - 1);
+  return name;
+}
+
+inline int run_evaluate(int argc, char** argv)
+{
+  const Arguments args(argc, argv, 2,
+                       {"-o", "--output", "--repository", "--shard", "--threads", "--barycenter", "--k-min", "--k-max",
+                        "--fixed-k", "--angle-tolerance"},
+                       {"-h", "--help", "--resume", "--per-point", "--only-with-normals"});
+  if(args.has("-h") || args.has("--help"))
+  {
+    std::cout << EVALUATE_USAGE;
+    return EXIT_OK;
+  }
+  const std::string outdir = args.get("-o", args.get("--output"));
+  if(outdir.empty())
+    throw Usage_error("evaluate needs -o OUTDIR");
+  if(args.positional().empty())
+    throw Usage_error("evaluate needs at least one input file or folder");
+  const Search_options options = read_search_options(args);
+  Evaluation_settings settings;
+  settings.k_min = options.k_min;
+  settings.k_max = options.k_max;
+  settings.fixed_k = args.get_unsigned("--fixed-k", options.k_max);
+  if(settings.fixed_k < options.k_min || settings.fixed_k > options.k_max)
+    throw Usage_error("--fixed-k must lie in [--k-min, --k-max]");
+  settings.barycenter = options.barycenter == SN::Barycenter::WEIGHTED ? "weighted" : "unweighted";
+  settings.angle_tolerance = options.angle_tolerance;
+  settings.cut_off_angle = std::acos(0.9);
+  settings.a_grid = settings.b_grid = SN::default_angle_grid();
+
+  std::vector<Model_file> models = find_models(args.positional());
+  unsigned int shard_index = 1, shard_count = 1;
+  if(args.has("--shard"))
+  {
+    const std::string text = args.get("--shard");
+    if(std::sscanf(text.c_str(), "%u/%u", &shard_index, &shard_count) != 2 || shard_count == 0 || shard_index == 0 ||
+       shard_index > shard_count)
+      throw Usage_error("--shard needs I/N with 1 <= I <= N, got '" + text + "'");
+    models = shard(models, shard_index, shard_count);
+  }
+  std::string repository = args.get("--repository");
+  if(repository.empty())
+    repository = fs::path(args.positional().front()).lexically_normal().filename().string();
+  if(repository.empty())
+    repository = fs::absolute(args.positional().front()).lexically_normal().parent_path().filename().string();
+
+  std::error_code ec;
+  fs::create_directories(fs::path(outdir) / "models", ec);
+  if(ec)
+    throw Usage_error("cannot create " + outdir + ": " + ec.message());
+
+  std::uintmax_t total_bytes = 0;
+  for(const auto& m : models)
+    total_bytes += m.bytes;
+  Progress progress(models.size(), total_bytes);
+  CGAL::Real_timer timer;
+  timer.start();
+  std::vector<Model_failure> failures;
+  std::vector<std::string> skipped_without_normals;
+  std::size_t evaluated = 0, resumed = 0, points = 0;
+  for(const Model_file& file : models)
+  {
+    const fs::path json_path = fs::path(outdir) / "models" / (file.name + ".json");
+    if(args.has("--resume") && fs::exists(json_path))
+    {
+      ++resumed;
+      progress.done(file.name, 0, file.bytes, "already done");
+      continue;
+    }
+    try
+    {
+      const SN::Oriented_point_set model = read_model(file.path, options.k_max, !args.has("--only-with-normals"));
+      if(model.normals.empty())
+      {
+        skipped_without_normals.push_back(file.name);
+        progress.done(file.name, 0, file.bytes, "skipped: no normals in the file");
+        continue;
+      }
+      const auto evaluations = evaluate_model(model, options, settings);
+      const Model_result result = model_result(file, model, evaluations, settings);
+      fs::create_directories(json_path.parent_path());
+      if(args.has("--per-point"))
+        write_file_atomically((fs::path(outdir) / "models" / (file.name + ".csv")).string(),
+                              [&](std::ofstream& out) { write_evaluation_csv(out, model, evaluations); });
+      // The model file last: its presence means the model is complete (--resume relies on it).
+      write_file_atomically(json_path.string(), [&](std::ofstream& out) { write_model_json(out, result, settings); });
+      ++evaluated;
+      points += result.points;
+      progress.done(file.name, result.points, file.bytes,
+                    std::to_string(result.points) + " points, " + std::to_string(result.statistics.optimal.failures) +
+                      " failures");
+    }
+    catch(const Usage_error& e)
+    {
+      throw; // the output folder is unusable: stop
+    }
+    catch(const std::exception& e)
+    {
+      failures.push_back({file.name, e.what()});
+      progress.done(file.name, 0, file.bytes, std::string("FAILED: ") + e.what());
+    }
+  }
+  timer.stop();
+
+  const std::string dir = outdir;
+  write_file_atomically((fs::path(dir) / "failures.json").string(),
+                        [&](std::ofstream& out) { write_failures_json(out, failures); });
+  write_summary({dir}, repository, (fs::path(dir) / "summary.json").string());
+  write_file_atomically((fs::path(dir) / "run.json").string(), [&](std::ofstream& out) {
+    Json_writer w(out);
+    w.begin_object()
+      .value("command", "evaluate")
+      .value("date", iso_date())
+      .value("host", host_name())
+      .value("seconds", timer.time())
+      .value("threads", unsigned(options.threads))
+      .value("shard", std::to_string(shard_index) + "/" + std::to_string(shard_count))
+      .value("models_in_shard", models.size())
+      .value("models_evaluated", evaluated)
+      .value("models_resumed", resumed)
+      .value("models_failed", failures.size())
+      .value("points_evaluated", points);
+    w.begin_array("inputs");
+    for(const auto& input : args.positional())
+      w.value(nullptr, fs::absolute(input).lexically_normal().string());
+    w.end_array();
+    w.array("skipped_without_normals", skipped_without_normals);
+    w.end_object().finish();
+  });
+  std::cerr << outdir << ": " << evaluated << " models evaluated, " << resumed << " resumed, " << failures.size()
+            << " failed, " << skipped_without_normals.size() << " skipped, " << points << " points, "
+            << Progress::duration(timer.time()) << '\n';
+  return EXIT_OK;
+}
+
+inline int run_merge(int argc, char** argv)
+{
+  const Arguments args(argc, argv, 2, {"-o", "--output", "--repository"}, {"-h", "--help"});
+  if(args.has("-h") || args.has("--help"))
+  {
+    std::cout << MERGE_USAGE;
+    return EXIT_OK;
+  }
+  const std::string outdir = args.get("-o", args.get("--output"));
+  if(outdir.empty() || args.positional().empty())
+    throw Usage_error("merge needs OUTDIR... -o OUTDIR");
+  std::string repository = args.get("--repository");
+  std::vector<Model_failure> failures;
+  for(const auto& folder : args.positional())
+  {
+    const fs::path summary = fs::path(folder) / "summary.json";
+    if(!fs::exists(summary))
+      throw Usage_error(folder + " has no summary.json: not an evaluation folder");
+    const std::string name = read_json(summary.string()).get<std::string>("repository");
+    if(repository.empty())
+      repository = name;
+    else if(!args.has("--repository") && name != repository)
+      throw Usage_error("folders of different repositories (" + repository + ", " + name +
+                        "): pass --repository to merge them anyway");
+    const auto f = read_failures_json((fs::path(folder) / "failures.json").string());
+    failures.insert(failures.end(), f.begin(), f.end());
+  }
+  std::vector<std::string> names;
+  for(const auto& folder : args.positional())
+    for(const auto& m : model_files(folder))
+      names.push_back(m.first);
+  std::sort(names.begin(), names.end());
+  const auto twice = std::adjacent_find(names.begin(), names.end());
+  if(twice != names.end())
+    throw Usage_error("model " + *twice + " is in two of the folders to merge");
+  std::error_code ec;
+  fs::create_directories(fs::path(outdir) / "models", ec);
+  if(ec)
+    throw Usage_error("cannot create " + outdir + ": " + ec.message());
+  // Copy the model files, so that the merged folder is an evaluation folder like any other.
+  for(const auto& folder : args.positional())
+  {
+    if(fs::equivalent(folder, outdir, ec))
+      continue;
+    for(const auto& m : model_files(folder))
+    {
+      const fs::path target = fs::path(outdir) / "models" / (m.first + ".json");
+      fs::create_directories(target.parent_path());
+      const std::string text = [&] {
+        std::ifstream in(m.second);
+        return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+      }();
+      write_file_atomically(target.string(), [&](std::ofstream& out) { out << text; });
+      const fs::path csv = fs::path(folder) / "models" / (m.first + ".csv");
+      if(fs::exists(csv))
+        fs::copy_file(csv, fs::path(outdir) / "models" / (m.first + ".csv"), fs::copy_options::overwrite_existing);
+    }
+  }
+  write_file_atomically((fs::path(outdir) / "failures.json").string(),
+                        [&](std::ofstream& out) { write_failures_json(out, failures); });
+  write_summary({outdir}, repository, (fs::path(outdir) / "summary.json").string());
+  std::cerr << outdir << ": merged " << args.positional().size() << " folders\n";
+  return EXIT_OK;
+}
+
+} // namespace sigmoid_tool
+
+#endif // SIGMOID_NEIGHBORHOODS_TOOL_EVALUATE_COMMAND_H

@@ -1,0 +1,319 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// `sigmoid-neighborhoods report`: the paper's Tables 2 and 3 as Markdown, Figures 3-6 as PNG.
+
+#ifndef SIGMOID_NEIGHBORHOODS_TOOL_REPORT_COMMAND_H
+#define SIGMOID_NEIGHBORHOODS_TOOL_REPORT_COMMAND_H
+
+#include "command_line.h"
+#include "evaluate_command.h"
+#include "evaluation_files.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#ifndef SIGMOID_NEIGHBORHOODS_SCRIPT_DIR
+#define SIGMOID_NEIGHBORHOODS_SCRIPT_DIR ""
+#endif
+
+namespace sigmoid_tool {
+
+inline const char* REPORT_USAGE =
+  "usage: sigmoid-neighborhoods report OUTDIR... [-o DIR] [--figure-model MODEL]\n"
+  "  one column group per evaluation folder (repository); Figure 3 shows MODEL, or the first model\n"
+  "  evaluated with --per-point\n";
+
+inline std::string format(const char* pattern, double v)
+{
+  if(!std::isfinite(v))
+    return "–";
+  char text[64];
+  std::snprintf(text, sizeof(text), pattern, v);
+  return text;
+}
+
+inline std::string percent(std::size_t part, std::size_t whole)
+{
+  return whole == 0 ? "–" : format("%.2f %%", 100. * double(part) / double(whole));
+}
+
+// The plotting script: next to the executable once installed, else in the source tree.
+inline std::string find_plot_script(const char* argv0)
+{
+  std::vector<fs::path> candidates;
+  if(const char* env = std::getenv("SIGMOID_NEIGHBORHOODS_SCRIPTS"))
+    candidates.push_back(fs::path(env) / "plot_evaluation.py");
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if(!ec)
+    candidates.push_back(exe.parent_path().parent_path() / "share" / "sigmoid-neighborhoods" / "plot_evaluation.py");
+  (void)argv0;
+  candidates.push_back(fs::path(SIGMOID_NEIGHBORHOODS_SCRIPT_DIR) / "plot_evaluation.py");
+  for(const auto& c : candidates)
+    if(fs::exists(c, ec))
+      return c.string();
+  throw Usage_error("cannot find plot_evaluation.py (set SIGMOID_NEIGHBORHOODS_SCRIPTS)");
+}
+
+inline std::string python_interpreter()
+{
+  // Debian's interpreter has matplotlib; a python3 earlier on PATH may not.
+  return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+}
+
+inline std::string shell_quote(const std::string& s)
+{
+  std::string q = "'";
+  for(char c : s)
+    q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+struct Repository_summary
+{
+  std::string folder, name;
+  Json tree;
+  bool evaluated() const { return bool(tree.get_child_optional("statistics")); }
+};
+
+inline void write_report_markdown(std::ostream& out, const std::vector<Repository_summary>& repos,
+                                  const std::string& figure3_note, bool figure3)
+{
+  auto row = [&](const std::string& head, const std::vector<std::string>& cells) {
+    out << "| " << head;
+    for(const auto& c : cells)
+      out << " | " << c;
+    out << " |\n";
+  };
+  auto rule = [&](std::size_t n) {
+    out << "|---";
+    for(std::size_t i = 0; i < n; ++i)
+      out << "|---:";
+    out << "|\n";
+  };
+  out << "# Evaluation of sigmoid neighborhoods\n\n";
+  out << "Per point, the classification error `E_dim` of its neighborhood (Shannon entropy of linearity, "
+         "planarity and scattering; 0 is a clear 1D, 2D or 3D shape, ln 3 the least clear) for equal "
+         "weights (`a = b = π`), the sharp cut-off `a = b = arccos(0.9)` and the optimal `(a*, b*, k*)`, "
+         "each with its best `k`; a failure is a point whose covariance is degenerate at every `k`.\n\n";
+  std::vector<std::string> names;
+  for(const auto& r : repos)
+    names.push_back(r.name);
+  out << "| repository | models | failed models | points | merged duplicates | dropped vertices |\n"
+         "|---|---:|---:|---:|---:|---:|\n";
+  for(const auto& r : repos)
+    out << "| " << r.name << " | " << r.tree.get<std::string>("models") << " | "
+        << r.tree.get<std::string>("failed_models") << " | " << r.tree.get<std::string>("points") << " | "
+        << r.tree.get<std::string>("merged_duplicates") << " | " << r.tree.get<std::string>("dropped_vertices")
+        << " |\n";
+
+  out << "\n## Table 2: `E_dim` over all points\n\n";
+  out << "| ";
+  std::vector<std::string> columns;
+  for(const auto& r : repos)
+  {
+    const std::string fixed = r.evaluated() ? r.tree.get<std::string>("settings.fixed_k") : "?";
+    for(const char* w : {"equal", "cut-off", "optimal"})
+      columns.push_back(r.name + ": " + w);
+    columns.push_back(r.name + ": equal, k = " + fixed);
+  }
+  for(const auto& c : columns)
+    out << " | " << c;
+  out << " |\n";
+  rule(columns.size());
+  const std::vector<std::pair<std::string, std::string>> stats = {
+    {"min", "min"}, {"mean", "mean"}, {"max", "max"}, {"sd", "standard_deviation"}};
+  for(const auto& st : stats)
+  {
+    std::vector<std::string> cells;
+    for(const auto& r : repos)
+      for(const char* w : {"equal", "cut_off", "optimal", "fixed_k"})
+        cells.push_back(r.evaluated() ? format("%.4f", json_double(r.tree, std::string("statistics.") + w + "." +
+                                                                             st.second,
+                                                                    std::numeric_limits<double>::quiet_NaN()))
+                                      : "–");
+    row(st.first, cells);
+  }
+  {
+    std::vector<std::string> cells;
+    for(const auto& r : repos)
+      for(const char* w : {"equal", "cut_off", "optimal", "fixed_k"})
+      {
+        if(!r.evaluated())
+        {
+          cells.push_back("–");
+          continue;
+        }
+        const std::size_t f = json_size(r.tree, std::string("statistics.") + w + ".failures");
+        cells.push_back(std::to_string(f) + " (" + percent(f, json_size(r.tree, "statistics.points")) + ")");
+      }
+    row("failures", cells);
+  }
+
+  out << "\n## Table 3: where the optimal `(a*, b*)` lie\n\n"
+         "Group a: `a = 0` when `a* = 0`; else `a-` when lowering `a*` one grid step (same `b*`, `k*`) does not "
+         "fail, `¬a-` when it does. Group b: `b = a` when `b* = a*`; else `b-` / `¬b-` for lowering `b*` one "
+         "step (staying `≥ a*`). Percent of the points with an optimum.\n\n";
+  out << "|";
+  for(const auto& n : names)
+    out << " | " << n;
+  out << " |\n";
+  rule(names.size());
+  const std::vector<std::pair<std::string, std::string>> t3 = {
+    {"a = 0", "a_zero"}, {"a-", "a_lower_valid"}, {"¬a-", "a_lower_fails"},
+    {"b = a", "b_equals_a"}, {"b-", "b_lower_valid"}, {"¬b-", "b_lower_fails"}};
+  for(const auto& t : t3)
+  {
+    std::vector<std::string> cells;
+    for(const auto& r : repos)
+      cells.push_back(r.evaluated() ? percent(json_size(r.tree, "statistics.table3." + t.second),
+                                              json_size(r.tree, "statistics.optimal.count"))
+                                    : "–");
+    row(t.first, cells);
+  }
+  {
+    std::vector<std::string> mean, sd;
+    for(const auto& r : repos)
+    {
+      mean.push_back(r.evaluated() ? format("%.2f", json_double(r.tree, "statistics.k_mean", NAN)) : "–");
+      sd.push_back(r.evaluated() ? format("%.2f", json_double(r.tree, "statistics.k_standard_deviation", NAN)) : "–");
+    }
+    row("mean k*", mean);
+    row("sd k*", sd);
+  }
+
+  out << "\n## The paper's figures, for comparison (other data)\n\n"
+         "| repository | points | E eq. mean | E opt. mean | E opt. sd | a = 0 | b = a | ¬b- | mean k* (sd) |\n"
+         "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n"
+         "| clean (TetWild/Thingi10K) | 7,213,429 | 0.631 | 0.248 | 0.188 | 60.19 % | 36.80 % | 37.72 % | 10.55 (4.77) |\n"
+         "| scanned (Choi et al.) | 25,929,256 | 0.335 | 0.253 | 0.157 | 54.30 % | 43.50 % | 42.29 % | 12.09 (4.62) |\n"
+         "| scanned (FAUST) | 17,918,016 | 0.250 | 0.211 | 0.096 | 62.44 % | 36.86 % | 42.11 % | 14.23 (4.49) |\n"
+         "| scanned (Pan et Oursons) | 1,199,992 | 0.383 | 0.320 | 0.134 | 60.70 % | 37.33 % | 42.21 % | 13.54 (4.40) |\n";
+
+  out << "\n## Figures\n\n";
+  if(figure3)
+    out << "![Figure 3](figure3_per_point.png)\n\n" << figure3_note << "\n\n";
+  else
+    out << figure3_note << "\n\n";
+  out << "![Figure 4](figure4_ab_histogram.png)\n\n"
+         "Figure 4: how often each `(a*, b*)` is optimal, each bar split by `k*`.\n\n"
+         "![Figure 5](figure5_k_histogram.png)\n\n"
+         "Figure 5: `k*` in percent of the points of each repository.\n\n"
+         "![Figure 6](figure6_k_deviation.png)\n\n"
+         "Figure 6: per model, the standard deviation of `k*` over its points; boxes at the quartiles, "
+         "whiskers at the extremes.\n";
+}
+
+inline int run_report(int argc, char** argv)
+{
+  const Arguments args(argc, argv, 2, {"-o", "--output", "--figure-model", "--threads"}, {"-h", "--help"});
+  if(args.has("-h") || args.has("--help"))
+  {
+    std::cout << REPORT_USAGE;
+    return EXIT_OK;
+  }
+  if(args.positional().empty())
+    throw Usage_error("report needs at least one evaluation folder");
+  const std::string outdir = args.get("-o", args.get("--output", args.positional().front()));
+  std::vector<Repository_summary> repos;
+  for(const auto& folder : args.positional())
+  {
+    const fs::path summary = fs::path(folder) / "summary.json";
+    if(!fs::exists(summary))
+      throw Usage_error(folder + " has no summary.json: run evaluate first");
+    Repository_summary r;
+    r.folder = folder;
+    r.tree = read_json(summary.string());
+    r.name = r.tree.get<std::string>("repository");
+    repos.push_back(r);
+  }
+  std::error_code ec;
+  fs::create_directories(outdir, ec);
+  if(ec)
+    throw Usage_error("cannot create " + outdir + ": " + ec.message());
+
+  // Figure 3's per-point values: computed for --figure-model, else a --per-point CSV of the evaluation.
+  std::string figure3_csv, figure3_name, figure3_note;
+  if(args.has("--figure-model"))
+  {
+    const std::string model_path = args.get("--figure-model");
+    Search_options options = read_search_options(args);
+    const Json& settings_tree = repos.front().tree;
+    Evaluation_settings settings;
+    if(repos.front().evaluated())
+      settings = read_settings(settings_tree);
+    settings.cut_off_angle = std::acos(0.9);
+    settings.a_grid = settings.b_grid = SN::default_angle_grid();
+    options.k_min = settings.k_min;
+    options.k_max = settings.k_max;
+    options.barycenter = settings.barycenter == "unweighted" ? SN::Barycenter::UNWEIGHTED : SN::Barycenter::WEIGHTED;
+    options.angle_tolerance = settings.angle_tolerance;
+    SN::Oriented_point_set model;
+    try
+    {
+      model = read_model(model_path, options.k_max);
+    }
+    catch(const SN::Input_error& e)
+    {
+      throw Usage_error(model_path + ": " + e.what());
+    }
+    const auto evaluations = evaluate_model(model, options, settings);
+    figure3_csv = (fs::path(outdir) / "figure3_points.csv").string();
+    write_file_atomically(figure3_csv, [&](std::ofstream& out) { write_evaluation_csv(out, model, evaluations); });
+    figure3_name = fs::path(model_path).filename().string();
+  }
+  else
+    for(const auto& r : repos)
+    {
+      const fs::path models = fs::path(r.folder) / "models";
+      for(const auto& m : model_files(r.folder))
+      {
+        const fs::path csv = models / (m.first + ".csv");
+        if(fs::exists(csv))
+        {
+          figure3_csv = csv.string();
+          figure3_name = r.name + "/" + m.first;
+          break;
+        }
+      }
+      if(!figure3_csv.empty())
+        break;
+    }
+  if(figure3_csv.empty())
+    figure3_note = "Figure 3 needs per-point values: pass `--figure-model MODEL` or evaluate with `--per-point`.";
+  else
+    figure3_note = "Figure 3: " + figure3_name + ": per point `E_dim` (top) and label (bottom) for equal weights, "
+                   "the cut-off `a = b = arccos(0.9)` and the optimal triple; failures in red.";
+
+  const std::string report = (fs::path(outdir) / "report.md").string();
+  write_file_atomically(report, [&](std::ofstream& out) {
+    write_report_markdown(out, repos, figure3_note, !figure3_csv.empty());
+  });
+
+  std::string command = shell_quote(python_interpreter()) + " " + shell_quote(find_plot_script(argv[0])) +
+                        " --output " + shell_quote(outdir);
+  if(!figure3_csv.empty())
+    command += " --figure3 " + shell_quote(figure3_csv) + " --figure3-name " + shell_quote(figure3_name);
+  for(const auto& r : repos)
+    command += " " + shell_quote(r.folder);
+  if(std::system(command.c_str()) != 0)
+  {
+    std::cerr << "sigmoid-neighborhoods report: the figures could not be drawn (needs python3 with matplotlib); "
+              << report << " is written\n";
+    return EXIT_FAILED;
+  }
+  std::cerr << "report: " << report << " and figures in " << outdir << '\n';
+  return EXIT_OK;
+}
+
+} // namespace sigmoid_tool
+
+#endif // SIGMOID_NEIGHBORHOODS_TOOL_REPORT_COMMAND_H
