@@ -50,9 +50,9 @@ corpus: deps
 # and its point sets with normals as a scanned one, then the report with Figure 3 on the fandisk.
 evaluate: build corpus
 	@mkdir -p $(RESULTS_DIR)
-	$(TOOL) evaluate $(CORPUS_DIR)/data/meshes -o $(RESULTS_DIR)/clean --repository "CGAL meshes" --resume
+	$(TOOL) evaluate $(CORPUS_DIR)/data/meshes -o $(RESULTS_DIR)/clean --repository "CGAL meshes"
 	$(TOOL) evaluate $(CORPUS_DIR)/data/points_3 -o $(RESULTS_DIR)/scanned --repository "CGAL point sets" \
-	  --only-with-normals --resume
+	  --only-with-normals
 	$(TOOL) report $(RESULTS_DIR)/clean $(RESULTS_DIR)/scanned -o $(RESULTS_DIR) \
 	  --figure-model $(CORPUS_DIR)/data/meshes/fandisk.off
 	$(TOOL) optimal $(CORPUS_DIR)/data/meshes/fandisk.off -o $(RESULTS_DIR)/fandisk_optimal.csv \
