@@ -34,10 +34,18 @@ namespace {
 // A scratch folder per test run.
 const std::string& scratch()
 {
+  // removed when the test program ends
+  struct Scratch
+  {
+    std::string root;
+    ~Scratch() { std::system(("rm -rf '" + root + "'").c_str()); }
+  };
+  static Scratch scratch;
   static const std::string dir = [] {
     char name[] = "/tmp/sn_cli_XXXXXX";
     const char* made = ::mkdtemp(name);
     REQUIRE(made != nullptr);
+    scratch.root = made;
     return std::string(made);
   }();
   return dir;

@@ -1,0 +1,290 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The evaluation: per-point evaluation and mergeable statistics in the library; evaluate, merge,
+// resume and report through the command-line tool.
+
+#include "test_models.h"
+
+#include <CGAL/Sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/property_map.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <boost/property_map/property_map.hpp>
+#include <map>
+
+#include <catch2/catch.hpp>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace SN = CGAL::Sigmoid_neighborhoods;
+namespace fs = std::filesystem;
+typedef std::pair<Point_3, Vector_3> Point_with_normal;
+
+namespace {
+
+std::string read_text(const fs::path& file)
+{
+  std::ifstream in(file);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+int run(const std::string& arguments)
+{
+  const std::string command = std::string(SN_TOOL_PATH) + " " + arguments + " > /dev/null 2>&1";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// A folder of models: grid cubes of several sizes, noisy spheres with normals, in sub-folders.
+const fs::path& repository()
+{
+  // removed when the test program ends
+  struct Scratch
+  {
+    fs::path root;
+    ~Scratch() { std::error_code ec; fs::remove_all(root, ec); }
+  };
+  static Scratch scratch;
+  static const fs::path dir = [] {
+    char name[] = "/tmp/sn_eval_XXXXXX";
+    const fs::path root = ::mkdtemp(name);
+    scratch.root = root;
+    const fs::path models = root / "models";
+    fs::create_directories(models / "cubes");
+    fs::create_directories(models / "spheres");
+    for(int n : {3, 4, 6, 9})
+      CGAL::IO::write_OFF((models / "cubes" / ("cube" + std::to_string(n) + ".off")).string(),
+                          make_grid_cube(n, 1. / n), CGAL::parameters::stream_precision(17));
+    std::mt19937_64 rng(3);
+    std::normal_distribution<double> noise(0., 0.002);
+    for(int s = 0; s < 3; ++s)
+    {
+      std::ofstream out(models / "spheres" / ("sphere" + std::to_string(s) + ".xyz"));
+      out.precision(17);
+      const int n = 300 + 200 * s;
+      for(int i = 0; i < n; ++i)
+      {
+        const double z = 1. - 2. * (i + 0.5) / n, r = std::sqrt(1. - z * z), phi = 2.399963229728653 * i;
+        out << r * std::cos(phi) + noise(rng) << ' ' << r * std::sin(phi) + noise(rng) << ' ' << z + noise(rng) << ' '
+            << r * std::cos(phi) << ' ' << r * std::sin(phi) << ' ' << z << '\n';
+      }
+    }
+    return root;
+  }();
+  return dir;
+}
+
+fs::path models() { return repository() / "models"; }
+fs::path out(const std::string& name) { return repository() / name; }
+
+} // namespace
+
+TEST_CASE("evaluation: per-point optimum equals compute_optimal_sigmoid_neighborhoods", "[evaluation]")
+{
+  Mesh cube = make_grid_cube(5, 0.2);
+  std::vector<Point_with_normal> points;
+  std::map<Mesh::Vertex_index, Vector_3> normals;
+  CGAL::Polygon_mesh_processing::compute_vertex_normals(cube, boost::make_assoc_property_map(normals));
+  for(auto v : cube.vertices())
+    points.emplace_back(cube.point(v), normals[v]);
+  const auto np = CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Point_with_normal>())
+                    .normal_map(CGAL::Second_of_pair_property_map<Point_with_normal>());
+  std::vector<SN::Point_evaluation> evaluations;
+  std::vector<SN::Optimal_sigmoid_neighborhood> optimal;
+  SN::evaluate_sigmoid_neighborhoods<CGAL::Sequential_tag>(points, std::back_inserter(evaluations), np);
+  SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(points, std::back_inserter(optimal), np);
+  REQUIRE(evaluations.size() == points.size());
+  std::size_t edges = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    const auto& e = evaluations[i];
+    CHECK(e.optimal.error() == optimal[i].error());
+    CHECK(e.optimal.k == optimal[i].k);
+    CHECK(e.optimal.error_equal == optimal[i].error_equal);
+    const Point_3& p = points[i].first;
+    const int border = (p.x() == 0 || p.x() == 1) + (p.y() == 0 || p.y() == 1) + (p.z() == 0 || p.z() == 1);
+    if(border == 2)
+    {
+      // a cube edge: a* = b* = 0, both at the bottom of Table 3; the cut-off keeps the edge, E = 0
+      ++edges;
+      CHECK(e.a_lowering == SN::Lowering::AT_BOTTOM);
+      CHECK(e.b_lowering == SN::Lowering::AT_BOTTOM);
+      CHECK(e.error_cut_off == Approx(0.).margin(1e-12));
+      CHECK(e.cut_off_label == SN::Dimensionality::LINEAR);
+    }
+  }
+  CHECK(edges == 12 * 4);
+}
+
+TEST_CASE("evaluation: statistics of two halves merge into the whole", "[evaluation]")
+{
+  Mesh cube = make_grid_cube(6, 1.);
+  std::vector<Point_with_normal> points;
+  std::map<Mesh::Vertex_index, Vector_3> normals;
+  CGAL::Polygon_mesh_processing::compute_vertex_normals(cube, boost::make_assoc_property_map(normals));
+  for(auto v : cube.vertices())
+    points.emplace_back(cube.point(v), normals[v]);
+  std::vector<SN::Point_evaluation> evaluations;
+  SN::evaluate_sigmoid_neighborhoods<CGAL::Sequential_tag>(
+    points, std::back_inserter(evaluations),
+    CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Point_with_normal>())
+      .normal_map(CGAL::Second_of_pair_property_map<Point_with_normal>()));
+  const auto grid = SN::default_angle_grid();
+  SN::Evaluation_statistics whole(6, 20, grid, grid), first(6, 20, grid, grid), second(6, 20, grid, grid);
+  for(std::size_t i = 0; i < evaluations.size(); ++i)
+  {
+    whole.add(evaluations[i]);
+    (i < 100 ? first : second).add(evaluations[i]);
+  }
+  first.merge(second);
+  CHECK(first.points == whole.points);
+  CHECK(first.optimal.count == whole.optimal.count);
+  CHECK(first.cut_off.failures == whole.cut_off.failures);
+  CHECK(first.optimal.min == whole.optimal.min);
+  CHECK(first.optimal.max == whole.optimal.max);
+  CHECK(first.optimal.sum == Approx(whole.optimal.sum).epsilon(1e-12));
+  CHECK(first.pair_k_histogram == whole.pair_k_histogram);
+  CHECK(first.a_lowering == whole.a_lowering);
+  CHECK(first.b_lowering == whole.b_lowering);
+  CHECK(first.optimal.k_histogram == whole.optimal.k_histogram);
+  // Table 3 groups each sum to the points with an optimum
+  CHECK(whole.a_lowering[0] + whole.a_lowering[1] + whole.a_lowering[2] == whole.optimal.count);
+  CHECK(whole.b_lowering[0] + whole.b_lowering[1] + whole.b_lowering[2] == whole.optimal.count);
+  const auto km = whole.k_mean_and_deviation();
+  CHECK(km.first >= 6.);
+  CHECK(km.first <= 20.);
+  SN::Evaluation_statistics other_grid(6, 19, grid, grid);
+  CHECK_THROWS_AS(first.merge(other_grid), std::invalid_argument);
+}
+
+TEST_CASE("evaluate: three shards merge into the single run, byte for byte", "[evaluation][cli]")
+{
+  REQUIRE(run("evaluate " + models().string() + " -o " + out("single").string() + " --repository demo") == 0);
+  for(int i = 1; i <= 3; ++i)
+    REQUIRE(run("evaluate " + models().string() + " -o " + out("shard" + std::to_string(i)).string() +
+                " --repository demo --shard " + std::to_string(i) + "/3 --threads 1") == 0);
+  std::size_t in_shards = 0;
+  for(int i = 1; i <= 3; ++i)
+    for(const auto& e : fs::recursive_directory_iterator(out("shard" + std::to_string(i)) / "models"))
+      in_shards += e.path().extension() == ".json";
+  CHECK(in_shards == 7);
+  REQUIRE(run("merge " + out("shard1").string() + " " + out("shard2").string() + " " + out("shard3").string() +
+              " -o " + out("merged").string()) == 0);
+  const std::string single = read_text(out("single") / "summary.json");
+  CHECK(single.find("\"models\": 7") != std::string::npos);
+  CHECK(read_text(out("merged") / "summary.json") == single);
+  // the same shard twice is refused
+  CHECK(run("merge " + out("shard1").string() + " " + out("shard1").string() + " -o " + out("twice").string()) == 2);
+}
+
+TEST_CASE("evaluate: a corrupt model lands in failures.json, the others are unaffected", "[evaluation][cli]")
+{
+  const fs::path with_bad = out("with_bad_inputs");
+  fs::create_directories(with_bad);
+  fs::copy(models(), with_bad, fs::copy_options::recursive);
+  std::ofstream(with_bad / "cubes" / "truncated.off") << "OFF\n8 6 0\n0 0 0\n1 0";
+  std::ofstream(with_bad / "empty.xyz");
+  REQUIRE(run("evaluate " + with_bad.string() + " -o " + out("bad_run").string() + " --repository demo") == 0);
+  const std::string failures = read_text(out("bad_run") / "failures.json");
+  CHECK(failures.find("cubes/truncated.off") != std::string::npos);
+  CHECK(failures.find("empty.xyz") != std::string::npos);
+  if(!fs::exists(out("single") / "summary.json"))
+    REQUIRE(run("evaluate " + models().string() + " -o " + out("single").string() + " --repository demo") == 0);
+  for(const auto& e : fs::recursive_directory_iterator(out("single") / "models"))
+  {
+    if(!e.is_regular_file())
+      continue;
+    const fs::path relative = fs::relative(e.path(), out("single"));
+    CHECK(read_text(out("bad_run") / relative) == read_text(e.path()));
+  }
+  const std::string summary = read_text(out("bad_run") / "summary.json");
+  CHECK(summary.find("\"failed_models\": 2") != std::string::npos);
+}
+
+TEST_CASE("evaluate: a run killed with SIGKILL and resumed equals the uninterrupted run", "[evaluation][cli]")
+{
+  if(!fs::exists(out("single") / "summary.json"))
+    REQUIRE(run("evaluate " + models().string() + " -o " + out("single").string() + " --repository demo") == 0);
+  const fs::path killed = out("killed");
+  for(int attempt = 0; attempt < 3; ++attempt)
+  {
+    fs::remove_all(killed);
+    const pid_t child = ::fork();
+    REQUIRE(child >= 0);
+    if(child == 0)
+    {
+      ::freopen("/dev/null", "w", stderr);
+      ::execl(SN_TOOL_PATH, SN_TOOL_PATH, "evaluate", models().c_str(), "-o", killed.c_str(), "--repository", "demo",
+              "--threads", "1", static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    // kill it once some, but not all, models are written
+    const auto start = std::chrono::steady_clock::now();
+    while(std::chrono::steady_clock::now() - start < std::chrono::seconds(20))
+    {
+      std::size_t written = 0;
+      if(fs::exists(killed / "models"))
+        for(const auto& e : fs::recursive_directory_iterator(killed / "models"))
+          written += e.path().extension() == ".json";
+      if(written >= 1)
+        break;
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    ::kill(child, SIGKILL);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    if(!fs::exists(killed / "summary.json"))
+      break; // killed before the end, as wanted
+  }
+  CHECK_FALSE(fs::exists(killed / "summary.json"));
+  REQUIRE(run("evaluate " + models().string() + " -o " + killed.string() + " --repository demo --resume") == 0);
+  CHECK(read_text(killed / "summary.json") == read_text(out("single") / "summary.json"));
+  // no temporary file is left behind
+  for(const auto& e : fs::recursive_directory_iterator(killed))
+    CHECK(e.path().filename().string().find(".tmp.") == std::string::npos);
+}
+
+TEST_CASE("report: renders for one and for two repositories", "[evaluation][cli]")
+{
+  if(!fs::exists(out("single") / "summary.json"))
+    REQUIRE(run("evaluate " + models().string() + " -o " + out("single").string() + " --repository demo") == 0);
+  REQUIRE(run("evaluate " + (models() / "spheres").string() + " -o " + out("spheres").string() +
+              " --repository spheres --per-point") == 0);
+  const bool can_plot = std::system("/usr/bin/python3 -c 'import matplotlib, numpy' > /dev/null 2>&1") == 0;
+  for(const std::string& folders : {out("single").string(), out("single").string() + " " + out("spheres").string()})
+  {
+    const fs::path dir = out(folders.find(' ') == std::string::npos ? "report1" : "report2");
+    const int code = run("report " + folders + " -o " + dir.string());
+    const std::string md = read_text(dir / "report.md");
+    CHECK(md.find("## Table 2") != std::string::npos);
+    CHECK(md.find("## Table 3") != std::string::npos);
+    CHECK(md.find("demo: optimal") != std::string::npos);
+    CHECK((folders.find(' ') == std::string::npos) == (md.find("spheres: optimal") == std::string::npos));
+    if(can_plot)
+    {
+      CHECK(code == 0);
+      for(const char* png : {"figure4_ab_histogram.png", "figure5_k_histogram.png", "figure6_k_deviation.png"})
+        CHECK(fs::file_size(dir / png) > 10000);
+    }
+    else
+      WARN("matplotlib not found: figures not checked");
+  }
+  // the two-repository report found the per-point values of a sphere for Figure 3
+  if(can_plot)
+    CHECK(fs::exists(out("report2") / "figure3_per_point.png"));
+}
