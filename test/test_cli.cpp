@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -38,7 +39,7 @@ const std::string& scratch()
   struct Scratch
   {
     std::string root;
-    ~Scratch() { std::system(("rm -rf '" + root + "'").c_str()); }
+    ~Scratch() { std::error_code ec; std::filesystem::remove_all(root, ec); }
   };
   static Scratch scratch;
   static const std::string dir = [] {
