@@ -314,7 +314,7 @@ inline int run_evaluate(int argc, char** argv)
                     std::to_string(result.points) + " points, " + std::to_string(result.statistics.optimal.failures) +
                       " failures");
     }
-    catch(const Usage_error& e)
+    catch(const Usage_error&)
     {
       throw; // the output folder is unusable: stop
     }

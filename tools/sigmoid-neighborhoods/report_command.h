@@ -46,7 +46,7 @@ inline std::string percent(std::size_t part, std::size_t whole)
 }
 
 // The plotting script: next to the executable once installed, else in the source tree.
-inline std::string find_plot_script(const char* argv0)
+inline std::string find_plot_script()
 {
   std::vector<fs::path> candidates;
   if(const char* env = std::getenv("SIGMOID_NEIGHBORHOODS_SCRIPTS"))
@@ -55,7 +55,6 @@ inline std::string find_plot_script(const char* argv0)
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if(!ec)
     candidates.push_back(exe.parent_path().parent_path() / "share" / "sigmoid-neighborhoods" / "plot_evaluation.py");
-  (void)argv0;
   candidates.push_back(fs::path(SIGMOID_NEIGHBORHOODS_SCRIPT_DIR) / "plot_evaluation.py");
   for(const auto& c : candidates)
     if(fs::exists(c, ec))
@@ -298,7 +297,7 @@ inline int run_report(int argc, char** argv)
     write_report_markdown(out, repos, figure3_note, !figure3_csv.empty());
   });
 
-  std::string command = shell_quote(python_interpreter()) + " " + shell_quote(find_plot_script(argv[0])) +
+  std::string command = shell_quote(python_interpreter()) + " " + shell_quote(find_plot_script()) +
                         " --output " + shell_quote(outdir);
   if(!figure3_csv.empty())
     command += " --figure3 " + shell_quote(figure3_csv) + " --figure3-name " + shell_quote(figure3_name);
