@@ -292,3 +292,47 @@ TEST_CASE("CLI: bad usage exits with 2", "[cli][bad-input]")
   CHECK_FALSE(exists(path("u.csv")));
   CHECK(run("optimal --help").exit_code == 0);
 }
+
+TEST_CASE("CLI: the bad-input corpus gives the expected exit code and message", "[cli][bad-input]")
+{
+  const std::string dir = std::string(SN_TEST_DATA_DIR) + "/bad";
+  std::ifstream manifest(dir + "/EXPECTED.txt");
+  REQUIRE(manifest.good());
+  std::string line;
+  std::size_t cases = 0;
+  while(std::getline(manifest, line))
+  {
+    if(line.empty() || line[0] == '#')
+      continue;
+    const std::size_t t1 = line.find('\t'), t2 = line.find('\t', t1 + 1);
+    REQUIRE(t2 != std::string::npos);
+    const std::string file = line.substr(0, t1), expected = line.substr(t2 + 1);
+    const int code = std::stoi(line.substr(t1 + 1, t2 - t1 - 1));
+    INFO(file);
+    const std::string csv = path("bad_" + file + ".csv");
+    const Run r = run("optimal '" + dir + "/" + file + "' -o " + csv);
+    CHECK(r.exit_code == code);
+    CHECK(r.err.find(expected) != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(exists(csv) == (code == 0));
+    // the library reader agrees: it throws exactly for the files it cannot read
+    bool thrown = false;
+    try
+    {
+      const SN::Oriented_point_set model = SN::read_oriented_point_set(dir + "/" + file);
+      CHECK(model.points.size() == model.normals.size());
+    }
+    catch(const SN::Input_error& e)
+    {
+      thrown = true;
+      CHECK(r.err.find(e.what()) != std::string::npos);
+    }
+    if(code == 0)
+      CHECK_FALSE(thrown);
+    ++cases;
+  }
+  CHECK(cases >= 30);
+  // a folder and a missing file
+  CHECK(run("optimal '" + dir + "' -o " + path("folder.csv")).exit_code == 2);
+  CHECK(run("optimal '" + dir + "/missing.off' -o " + path("missing.csv")).exit_code == 2);
+}

@@ -73,7 +73,10 @@ inline SN::Oriented_point_set read_model(const std::string& path, unsigned int k
   SN::Oriented_point_set model = SN::read_oriented_point_set(path, estimate_normals ? 18 : 0);
   if(model.points.size() < std::size_t(k_max) + 1)
     throw SN::Input_error("needs at least k_max + 1 = " + std::to_string(k_max + 1) + " distinct points, got " +
-                          std::to_string(model.points.size()));
+                          std::to_string(model.points.size()) +
+                          (model.dropped_vertices == 0 ? std::string()
+                                                       : " (" + std::to_string(model.dropped_vertices) +
+                                                           " vertices dropped: no face or no defined normal)"));
   return model;
 }
 

@@ -29,6 +29,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -87,6 +88,40 @@ inline bool is_finite(const Oriented_point_set::Point_3& p)
 {
   return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
 }
+
+// Beyond this magnitude, squared distances overflow a double.
+constexpr double LARGEST_COORDINATE = 1e150;
+
+inline void check_coordinates(const Oriented_point_set::Point_3& p, const char* what, std::size_t i)
+{
+  if(!is_finite(p))
+    throw Input_error(std::string(what) + " " + std::to_string(i) + " has a non-finite coordinate");
+  if(std::abs(p.x()) > LARGEST_COORDINATE || std::abs(p.y()) > LARGEST_COORDINATE ||
+     std::abs(p.z()) > LARGEST_COORDINATE)
+    throw Input_error(std::string(what) + " " + std::to_string(i) +
+                      " has a coordinate beyond 1e150, where squared distances overflow");
+}
+
+// CGAL's readers explain a failure on std::cerr; keep the explanation for our one-line message.
+class Captured_cerr
+{
+public:
+  Captured_cerr() : m_old(std::cerr.rdbuf(m_buffer.rdbuf())) {}
+  ~Captured_cerr() { std::cerr.rdbuf(m_old); }
+  std::string first_line() const
+  {
+    std::string text = m_buffer.str();
+    const std::size_t end = text.find('\n');
+    text = text.substr(0, end);
+    if(text.rfind("Error: ", 0) == 0)
+      text = text.substr(7);
+    return text;
+  }
+
+private:
+  std::ostringstream m_buffer;
+  std::streambuf* m_old;
+};
 
 // `x y z` or `x y z nx ny nz` per line; `#` starts a comment. Strict, with line numbers.
 inline void read_xyz(const std::string& filename, std::vector<Oriented_point_set::Point_3>& points,
@@ -153,8 +188,7 @@ inline void mesh_to_points(std::vector<Oriented_point_set::Point_3>& points,
   out.is_mesh = true;
   out.input_vertices = points.size();
   for(std::size_t v = 0; v < points.size(); ++v)
-    if(!is_finite(points[v]))
-      throw Input_error("vertex " + std::to_string(v) + " has a non-finite coordinate");
+    check_coordinates(points[v], "vertex", v);
 
   // Vertices at one position become the first of them (SPEC §1), faces follow.
   std::map<std::array<double, 3>, std::size_t> first_at;
@@ -306,20 +340,34 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename, u
   {
     std::vector<Point_3> points;
     std::vector<std::vector<std::size_t>> polygons;
-    const bool soup_read = internal::read_soup(filename, ext, points, polygons);
+    std::string reason;
+    bool soup_read;
+    {
+      internal::Captured_cerr captured;
+      soup_read = internal::read_soup(filename, ext, points, polygons);
+      reason = captured.first_line();
+    }
+    if(!reason.empty())
+      reason = " (" + reason + ")";
     if(soup_read && !polygons.empty())
     {
       internal::mesh_to_points(points, polygons, out);
       return out;
     }
     if(!soup_read)
-      throw Input_error("cannot parse the file as " + ext + (ext == "obj" ? " (or it has no faces)" : ""));
+      throw Input_error("cannot parse the file as " + ext + (ext == "obj" ? ", or it has no faces" : "") + reason);
     if(ext == "obj" || ext == "stl")
       throw Input_error("no faces in the file");
     // OFF or PLY without faces: a point set, maybe with normals.
     CGAL::Point_set_3<Point_3, Vector_3> point_set;
-    if(!CGAL::IO::read_point_set(filename, point_set))
-      throw Input_error("cannot parse the file as " + ext);
+    {
+      internal::Captured_cerr captured;
+      if(!CGAL::IO::read_point_set(filename, point_set))
+      {
+        const std::string why = captured.first_line();
+        throw Input_error("cannot parse the file as " + ext + (why.empty() ? "" : " (" + why + ")"));
+      }
+    }
     has_normals = point_set.has_normal_map();
     for(auto it = point_set.begin(); it != point_set.end(); ++it)
     {
@@ -334,8 +382,7 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename, u
     throw Input_error("no points in the file");
   for(std::size_t i = 0; i < out.points.size(); ++i)
   {
-    if(!internal::is_finite(out.points[i]))
-      throw Input_error("point " + std::to_string(i) + " has a non-finite coordinate");
+    internal::check_coordinates(out.points[i], "point", i);
     if(has_normals)
     {
       const Vector_3& n = out.normals[i];

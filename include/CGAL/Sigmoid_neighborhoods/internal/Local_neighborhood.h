@@ -48,6 +48,9 @@ Oriented_points copy_oriented_points(const PointRange& range, PointMap point_map
     Eigen::Vector3d normal(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z()));
     if(!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
       throw std::invalid_argument("point " + std::to_string(i) + " has a non-finite coordinate");
+    // Beyond this, squared distances overflow.
+    if(std::abs(x) > 1e150 || std::abs(y) > 1e150 || std::abs(z) > 1e150)
+      throw std::invalid_argument("point " + std::to_string(i) + " has a coordinate beyond 1e150");
     if(!normal.allFinite())
       throw std::invalid_argument("point " + std::to_string(i) + " has a non-finite normal");
     const double squared_norm = normal.squaredNorm();
