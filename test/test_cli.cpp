@@ -333,6 +333,8 @@ TEST_CASE("CLI: the bad-input corpus gives the expected exit code and message", 
   }
   CHECK(cases >= 30);
   // a folder and a missing file
-  CHECK(run("optimal '" + dir + "' -o " + path("folder.csv")).exit_code == 2);
+  const Run folder = run("optimal '" + dir + "' -o " + path("folder.csv"));
+  CHECK(folder.exit_code == 2);
+  CHECK(folder.err.find("is a folder") != std::string::npos);
   CHECK(run("optimal '" + dir + "/missing.off' -o " + path("missing.csv")).exit_code == 2);
 }

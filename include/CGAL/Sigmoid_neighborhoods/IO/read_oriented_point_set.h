@@ -28,6 +28,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -322,6 +323,9 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename, u
   typedef Oriented_point_set::Vector_3 Vector_3;
   Oriented_point_set out;
   const std::string ext = internal::lower_extension(filename);
+  std::error_code ec;
+  if(std::filesystem::is_directory(filename, ec))
+    throw Input_error("is a folder, not a file");
   {
     std::ifstream probe(filename, std::ios::binary | std::ios::ate);
     if(!probe)
