@@ -14,7 +14,11 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
-/// The default angle tolerance (radians): angles up to it count as exactly 0 (SPEC §3).
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  the default angle tolerance, `1e-6` radians: angles between normals up to it count as exactly 0,
+  so that vertex normals that differ by rounding on one flat face get weight 1 (SPEC §3).
+*/
 constexpr double DEFAULT_ANGLE_TOLERANCE = 1e-6;
 
 /// \cond SKIP_IN_MANUAL
@@ -39,12 +43,23 @@ constexpr double COSINE_DECISION_MARGIN = 1e-9;
   Angles `x <= angle_tolerance` count as exactly 0, so that vertex normals that differ by
   rounding on one flat face always get weight 1. `a = b = pi` gives equal weights,
   `a = b = arccos(rho)` the sharp cut-off of a dot-product threshold `rho`.
+
+  The weights of the paper are `w_ij = sig_{a,b}(angle(n_i, n_j))` for unit normals `n_i`, `n_j`:
+  `sigmoid(normal_angle(n_i, n_j))`, or `sigmoid.weight_from_cosine(n_i * n_j)` without computing
+  the angle.
+
+  \sa `normal_angle()`, `compute_sigmoid_features()`
 */
 class Cosine_sigmoid
 {
 public:
   /*!
-    \pre `0 <= a <= b <= pi` and `angle_tolerance >= 0`, checked: otherwise `std::invalid_argument`.
+    creates the sigmoid `sig_{a,b}`.
+    \param a the angle (radians) up to which the weight is 1
+    \param b the angle (radians) beyond which the weight is 0
+    \param angle_tolerance angles up to it count as 0 (radians)
+    \pre `0 <= a <= b <= pi` and `0 <= angle_tolerance < pi`, checked: otherwise
+    `std::invalid_argument`.
   */
   Cosine_sigmoid(double a, double b, double angle_tolerance = DEFAULT_ANGLE_TOLERANCE)
     : m_a(a), m_b(b), m_tolerance(angle_tolerance)
@@ -60,8 +75,11 @@ public:
     m_cos_zero = std::cos(std::max(b, angle_tolerance)) - internal::COSINE_DECISION_MARGIN;
   }
 
+  /// the angle `a` (radians) up to which the weight is 1.
   double a() const { return m_a; }
+  /// the angle `b` (radians) beyond which the weight is 0.
   double b() const { return m_b; }
+  /// the angle (radians) up to which angles count as 0.
   double angle_tolerance() const { return m_tolerance; }
 
   /// returns `true` when all weights are 1 (`a = b = pi`).
@@ -101,6 +119,11 @@ private:
   \ingroup PkgSigmoidNeighborhoodsRef
   the angle in `[0, pi]` between two unit vectors given as coordinate triples:
   `acos` of their dot product clamped to `[-1, 1]` (SPEC §3).
+
+  \tparam Vector a type whose coordinates are read as `n[0]`, `n[1]`, `n[2]` and convert to
+          `double`, such as a CGAL `Vector_3` of a kernel with `double` coordinates or
+          `Eigen::Vector3d`
+  \param n, m unit vectors; they are not normalised
 */
 template <typename Vector>
 double normal_angle(const Vector& n, const Vector& m)

@@ -15,10 +15,12 @@ namespace Sigmoid_neighborhoods {
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
-  the result of the optimal parameter search at one point (the paper's Equation 9).
+  the result of the optimal parameter search at one point (the paper's Equation 9), written by
+  `compute_optimal_sigmoid_neighborhoods()`.
 
   When every triple fails, `k == 0`, `a` and `b` are NaN and `features.error` is `+inf`:
-  the point is a *failure*.
+  the point is a *failure*. A default-constructed record is a failure; the mesh version of
+  `compute_optimal_sigmoid_neighborhoods()` gives one to the vertices it leaves out.
 */
 struct Optimal_sigmoid_neighborhood
 {
@@ -30,6 +32,7 @@ struct Optimal_sigmoid_neighborhood
   unsigned int k_equal = 0;                                     ///< its `k`, 0 when all fail
 
   double error() const { return features.error; } ///< `E_dim` at the optimum, `+inf` for a failure
+  /// `true` when every triple is degenerate at this point (`k == 0`).
   bool is_failure() const { return k == 0; }
 };
 

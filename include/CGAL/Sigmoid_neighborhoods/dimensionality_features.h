@@ -23,13 +23,20 @@ namespace Sigmoid_neighborhoods {
 */
 enum class Dimensionality
 {
+  /// linearity is the largest: the point lies on a curve
   LINEAR,
+  /// planarity is the largest: the point lies on a surface
   PLANAR,
+  /// scattering is the largest: the neighborhood fills a volume
   SCATTERED,
+  /// the covariance matrix vanishes: no features
   DEGENERATE
 };
 
-/// the name used in files: `linear`, `planar`, `scattered` or `degenerate`.
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  the name of a label as the tool writes it in files: `linear`, `planar`, `scattered` or `degenerate`.
+*/
 inline const char* dimensionality_name(Dimensionality d)
 {
   switch(d)
@@ -53,14 +60,17 @@ struct Dimensionality_features
   double planarity = 0.;                          ///< `(lambda2 - lambda3) / lambda1`
   double scattering = 0.;                         ///< `lambda3 / lambda1`
   double error = std::numeric_limits<double>::infinity(); ///< `E_dim`, in `[0, ln 3]`
+  /// the largest of linearity, planarity and scattering (ties to the first), or `DEGENERATE`
   Dimensionality label = Dimensionality::DEGENERATE;
 
+  /// `true` for the record of a degenerate neighborhood (`label == Dimensionality::DEGENERATE`).
   bool is_degenerate() const { return label == Dimensionality::DEGENERATE; }
 };
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
-  the Shannon entropy `E_dim = -L ln L - P ln P - S ln S`, with `0 ln 0 = 0`.
+  the Shannon entropy `E_dim = -L ln L - P ln P - S ln S`, with `0 ln 0 = 0`, of linearity `L`,
+  planarity `P` and scattering `S`. It lies in `[0, ln 3]` when `L + P + S = 1`.
 */
 inline double dimensionality_error(double linearity, double planarity, double scattering)
 {
@@ -72,6 +82,7 @@ inline double dimensionality_error(double linearity, double planarity, double sc
   \ingroup PkgSigmoidNeighborhoodsRef
   the features of eigenvalues `lambda1 >= lambda2 >= lambda3` (negative values from rounding
   are clamped to 0). Returns a degenerate record when `lambda1 <= 0`.
+  \pre the eigenvalues are sorted in decreasing order (not checked)
 */
 inline Dimensionality_features dimensionality_features_from_eigenvalues(double lambda1, double lambda2,
                                                                         double lambda3)
@@ -100,6 +111,8 @@ inline Dimensionality_features dimensionality_features_from_eigenvalues(double l
   the features of a symmetric positive semi-definite 3x3 matrix (only its lower triangle is read).
   The eigenvalues come from Eigen's iterative `SelfAdjointEigenSolver::compute()`, accurate to about
   `1e-12 lambda1` even when two eigenvalues nearly coincide, which closed-form solvers are not (SPEC §4).
+  The matrix is not tested for degeneracy: use the overload for `Weighted_covariance` for that.
+  \param covariance a covariance matrix, such as `Weighted_covariance::matrix`
 */
 inline Dimensionality_features dimensionality_features(const Eigen::Matrix3d& covariance)
 {

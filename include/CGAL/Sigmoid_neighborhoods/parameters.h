@@ -13,7 +13,8 @@ namespace Sigmoid_neighborhoods {
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
-  selects the barycenter `c_i` of the covariance matrix (SPEC §4).
+  selects the barycenter `c_i` of the covariance matrix (SPEC §4): the value type of the named
+  parameter `barycenter` and the third argument of `weighted_covariance()`.
 */
 enum class Barycenter
 {

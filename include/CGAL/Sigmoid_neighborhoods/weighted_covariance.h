@@ -22,13 +22,17 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
-/// The relative threshold of the degenerate test (SPEC §4).
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  the relative threshold `1e-12` of the degenerate test of `Weighted_covariance::is_degenerate()` (SPEC §4).
+*/
 constexpr double DEGENERATE_TRACE_THRESHOLD = 1e-12;
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
   the weighted covariance `C_i = sum_j w_ij (p_j - c_i)(p_j - c_i)^T` of one neighborhood,
   in coordinates centred at its first point `p_i`, with what the degenerate test needs.
+  Returned by `weighted_covariance()`; `dimensionality_features()` gives its features.
 */
 struct Weighted_covariance
 {
@@ -36,6 +40,7 @@ struct Weighted_covariance
   double weight_sum = 0.;                           ///< `sum_j w_ij`
   double squared_radius = 0.;                       ///< largest `|p_j - p_i|^2` over the neighborhood
 
+  /// the trace of `matrix`, the sum of its eigenvalues.
   double trace() const { return matrix(0, 0) + matrix(1, 1) + matrix(2, 2); }
 
   /// `sum w = 0` or `trace(C) <= 1e-12 sum_j w_ij r_i^2` (SPEC §4): the matrix vanishes.
@@ -115,9 +120,13 @@ inline void accumulate_covariance(const Eigen::Vector3d* offsets, const double* 
   \brief computes the weighted covariance of a neighborhood given as points and weights;
   the first point is the centre `p_i` of the neighborhood.
 
-  \tparam PointRange a range of `Point_3` of a CGAL kernel
+  \tparam PointRange a range of `Point_3` of a CGAL kernel (coordinates are converted to `double`)
   \tparam WeightRange a range of `double`, as long as `points`
+  \param points the neighborhood, its centre `p_i` first
+  \param weights the weight `w_ij` of each point, in the order of `points` (1 for `p_i` in the paper)
+  \param barycenter the centre `c_i`: `Barycenter::WEIGHTED` or `Barycenter::UNWEIGHTED`
   \pre `points` is not empty and has as many elements as `weights`; otherwise `std::invalid_argument`
+  \sa `Cosine_sigmoid`, which gives the weights
 */
 template <typename PointRange, typename WeightRange>
 Weighted_covariance weighted_covariance(const PointRange& points, const WeightRange& weights,
@@ -142,7 +151,9 @@ Weighted_covariance weighted_covariance(const PointRange& points, const WeightRa
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
-  the features of a weighted covariance: a degenerate record when `covariance.is_degenerate()`.
+  the features of a weighted covariance: a degenerate record when `covariance.is_degenerate()`,
+  otherwise `dimensionality_features(covariance.matrix)`.
+  \param covariance the result of `weighted_covariance()`
 */
 inline Dimensionality_features dimensionality_features(const Weighted_covariance& covariance)
 {
