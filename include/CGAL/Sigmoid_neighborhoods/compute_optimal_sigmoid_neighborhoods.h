@@ -35,25 +35,78 @@ namespace Sigmoid_neighborhoods {
           `CGAL::Sigmoid_neighborhoods::Parallel_if_available_tag` (OpenMP)
   \tparam PointRange a model of `ConstRange` whose value type is the key type of the maps
   \tparam OutputIterator an output iterator accepting `Optimal_sigmoid_neighborhood`
+  \tparam NamedParameters a sequence of named parameters
 
   \param points the input points, with oriented normals
   \param output receives one record per point, in the order of `points`
-  \param np optional named parameters:
-    - `point_map`, `normal_map` (CGAL): the position and the oriented normal of an element
-      (normals need not be unit; a zero or non-finite normal is an error);
-      `normal_map` is required;
-    - `geom_traits` (CGAL): the kernel of the maps' values;
-    - `Sigmoid_neighborhoods::parameters::k_min`, `k_max`: the sizes `K = {k_min, ..., k_max}`
-      (defaults 6 and 20);
-    - `a_grid`, `b_grid`: `std::vector<double>` in `[0, pi]` (default `{0, pi/6, ..., pi}`);
-      pairs with `a <= b` are searched;
-    - `barycenter`: `Barycenter::WEIGHTED` (default) or `Barycenter::UNWEIGHTED`;
-    - `angle_tolerance`: angles up to it count as 0 (default `1e-6`).
-    Our parameters come first in a chain, CGAL's after.
+  \param np an optional sequence of named parameters among the ones listed below: CGAL's
+    (`CGAL::parameters`) and the package's (`CGAL::Sigmoid_neighborhoods::parameters`, which come
+    first in a chain, see \ref Sigmoid_neighborhoods_named_parameters)
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{point_map}
+      \cgalParamDescription{a property map associating points to the elements of `points`}
+      \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of `PointRange`
+        and whose value type is a `Point_3` of a CGAL kernel}
+      \cgalParamDefault{`CGAL::Identity_property_map<Point_3>`}
+      \cgalParamExtra{coordinates are converted to `double`; they must be finite}
+    \cgalParamNEnd
+    \cgalParamNBegin{normal_map}
+      \cgalParamDescription{a property map associating oriented normals to the elements of `points`}
+      \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of `PointRange`
+        and whose value type is a `Vector_3` of a CGAL kernel}
+      \cgalParamDefault{none: required (a static assertion fails without it), except for a
+        `CGAL::Point_set_3`, whose normal map is the default}
+      \cgalParamExtra{normals need not be unit length; a zero or non-finite normal is an error}
+    \cgalParamNEnd
+    \cgalParamNBegin{geom_traits}
+      \cgalParamDescription{an instance of a geometric traits class}
+      \cgalParamType{a model of `Kernel`}
+      \cgalParamDefault{the kernel deduced from the point type of `point_map`}
+      \cgalParamExtra{the computation itself runs in `double`}
+    \cgalParamNEnd
+    \cgalParamNBegin{k_min}
+      \cgalParamDescription{the smallest neighborhood size of the search, `K = {k_min, ..., k_max}`}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{`DEFAULT_K_MIN` (6)}
+      \cgalParamExtra{`1 <= k_min <= k_max`, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+    \cgalParamNBegin{k_max}
+      \cgalParamDescription{the largest neighborhood size of the search}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{`DEFAULT_K_MAX` (20)}
+      \cgalParamExtra{at least `k_max + 1` points are needed}
+    \cgalParamNEnd
+    \cgalParamNBegin{a_grid}
+      \cgalParamDescription{the values of `a` (radians) that the search visits}
+      \cgalParamType{`std::vector<double>`}
+      \cgalParamDefault{`default_angle_grid()`: `{0, pi/6, pi/3, pi/2, 2pi/3, 5pi/6, pi}`}
+      \cgalParamExtra{values in `[0, pi]`, sorted and deduplicated; only pairs with `a <= b` are searched}
+    \cgalParamNEnd
+    \cgalParamNBegin{b_grid}
+      \cgalParamDescription{the values of `b` (radians) that the search visits}
+      \cgalParamType{`std::vector<double>`}
+      \cgalParamDefault{`default_angle_grid()`}
+      \cgalParamExtra{as `a_grid`; at least one pair `a <= b` must exist}
+    \cgalParamNEnd
+    \cgalParamNBegin{barycenter}
+      \cgalParamDescription{the centre of the covariance matrix}
+      \cgalParamType{`Barycenter`}
+      \cgalParamDefault{`Barycenter::WEIGHTED`}
+    \cgalParamNEnd
+    \cgalParamNBegin{angle_tolerance}
+      \cgalParamDescription{angles between normals up to it (radians) count as 0}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`DEFAULT_ANGLE_TOLERANCE` (`1e-6`)}
+      \cgalParamExtra{in `[0, pi)`, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
 
   \pre at least `k_max + 1` points; finite coordinates; non-zero finite normals.
   Violations throw `std::invalid_argument` with a message naming the point.
   \return the output iterator past the last record
+  \sa `compute_sigmoid_features()` for one fixed sigmoid, `evaluate_sigmoid_neighborhoods()` for
+  the evaluation of the paper's Section 5
 */
 template <typename ConcurrencyTag, typename PointRange, typename OutputIterator,
           typename CGAL_NP_TEMPLATE_PARAMETERS>
@@ -77,10 +130,66 @@ OutputIterator compute_optimal_sigmoid_neighborhoods(const PointRange& points, O
   vertices at one position merged (the smallest index kept, its copies get its record),
   vertices without a face or with an undefined normal left out (they get a failure record).
 
-  \tparam VertexRecordMap a `WritablePropertyMap` from vertex descriptors to `Optimal_sigmoid_neighborhood`
+  \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+          `CGAL::Sigmoid_neighborhoods::Parallel_if_available_tag`
+  \tparam Point the point type of the mesh, a `Point_3` of a CGAL kernel
+  \tparam VertexRecordMap a model of `WritablePropertyMap` with the mesh's vertex descriptor as key
+          type and `Optimal_sigmoid_neighborhood` as value type
+  \tparam NamedParameters a sequence of named parameters
 
-  \param np the parameters of the point range version but `point_map`/`normal_map`; and
-    `vertex_normal_map` (CGAL): a `ReadablePropertyMap` to the oriented vertex normals.
+  \param mesh the input mesh; vertex positions are read from `mesh.points()`
+  \param vertex_records receives the record of every vertex
+  \param np an optional sequence of named parameters among the ones listed below: CGAL's
+    (`CGAL::parameters`) and the package's (`CGAL::Sigmoid_neighborhoods::parameters`, which come
+    first in a chain, see \ref Sigmoid_neighborhoods_named_parameters)
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_normal_map}
+      \cgalParamDescription{a property map associating oriented normals to the vertices of `mesh`}
+      \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as key type and
+        a `Vector_3` of the kernel of `Point` as value type}
+      \cgalParamDefault{the normals of `CGAL::Polygon_mesh_processing::compute_vertex_normals()`}
+      \cgalParamExtra{a vertex whose normal is zero or not finite is left out}
+    \cgalParamNEnd
+    \cgalParamNBegin{k_min}
+      \cgalParamDescription{the smallest neighborhood size of the search, `K = {k_min, ..., k_max}`}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{`DEFAULT_K_MIN` (6)}
+      \cgalParamExtra{`1 <= k_min <= k_max`, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+    \cgalParamNBegin{k_max}
+      \cgalParamDescription{the largest neighborhood size of the search}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{`DEFAULT_K_MAX` (20)}
+      \cgalParamExtra{at least `k_max + 1` points are needed}
+    \cgalParamNEnd
+    \cgalParamNBegin{a_grid}
+      \cgalParamDescription{the values of `a` (radians) that the search visits}
+      \cgalParamType{`std::vector<double>`}
+      \cgalParamDefault{`default_angle_grid()`: `{0, pi/6, pi/3, pi/2, 2pi/3, 5pi/6, pi}`}
+      \cgalParamExtra{values in `[0, pi]`, sorted and deduplicated; only pairs with `a <= b` are searched}
+    \cgalParamNEnd
+    \cgalParamNBegin{b_grid}
+      \cgalParamDescription{the values of `b` (radians) that the search visits}
+      \cgalParamType{`std::vector<double>`}
+      \cgalParamDefault{`default_angle_grid()`}
+      \cgalParamExtra{as `a_grid`; at least one pair `a <= b` must exist}
+    \cgalParamNEnd
+    \cgalParamNBegin{barycenter}
+      \cgalParamDescription{the centre of the covariance matrix}
+      \cgalParamType{`Barycenter`}
+      \cgalParamDefault{`Barycenter::WEIGHTED`}
+    \cgalParamNEnd
+    \cgalParamNBegin{angle_tolerance}
+      \cgalParamDescription{angles between normals up to it (radians) count as 0}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`DEFAULT_ANGLE_TOLERANCE` (`1e-6`)}
+      \cgalParamExtra{in `[0, pi)`, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  \pre at least `k_max + 1` points after merging; finite coordinates
+  (otherwise `std::invalid_argument`)
   \return how vertices became points
 */
 template <typename ConcurrencyTag, typename Point, typename VertexRecordMap, typename CGAL_NP_TEMPLATE_PARAMETERS>

@@ -61,14 +61,58 @@ std::vector<Dimensionality_features> features_all(const Oriented_points& input, 
   \brief computes the dimensionality features (eigenvalues, linearity, planarity, scattering,
   `E_dim`, label) of every point for one fixed sigmoid `(a, b)` and neighborhood size `k`.
 
-  The angle tolerance is the one of `sigmoid`. A degenerate neighborhood gives a record with
-  `error = +inf` and the label `Dimensionality::DEGENERATE`.
+  The neighborhood of point `i` is `i` and its `k` nearest other points (ties by index), the
+  weights `w_ij = sigmoid(angle(n_i, n_j))`. The angle tolerance is the one of `sigmoid`.
+  A degenerate neighborhood gives a record with `error = +inf` and the label
+  `Dimensionality::DEGENERATE`. The results are the same, bit for bit, for any number of threads.
 
-  \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag`
+  \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+          `CGAL::Sigmoid_neighborhoods::Parallel_if_available_tag`
+  \tparam PointRange a model of `ConstRange` whose value type is the key type of the maps
   \tparam OutputIterator an output iterator accepting `Dimensionality_features`
-  \param np optional: `point_map`, `normal_map` (required), `geom_traits` (CGAL), and `barycenter`
+  \tparam NamedParameters a sequence of named parameters
+
+  \param points the input points, with oriented normals
+  \param sigmoid the weights `sig_{a,b}`
+  \param k the number of neighbors of each point
+  \param output receives one record per point, in the order of `points`
+  \param np an optional sequence of named parameters among the ones listed below: CGAL's
+    (`CGAL::parameters`) and the package's (`CGAL::Sigmoid_neighborhoods::parameters`, which come
+    first in a chain, see \ref Sigmoid_neighborhoods_named_parameters)
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{point_map}
+      \cgalParamDescription{a property map associating points to the elements of `points`}
+      \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of `PointRange`
+        and whose value type is a `Point_3` of a CGAL kernel}
+      \cgalParamDefault{`CGAL::Identity_property_map<Point_3>`}
+      \cgalParamExtra{coordinates are converted to `double`; they must be finite}
+    \cgalParamNEnd
+    \cgalParamNBegin{normal_map}
+      \cgalParamDescription{a property map associating oriented normals to the elements of `points`}
+      \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of `PointRange`
+        and whose value type is a `Vector_3` of a CGAL kernel}
+      \cgalParamDefault{none: required (a static assertion fails without it), except for a
+        `CGAL::Point_set_3`, whose normal map is the default}
+      \cgalParamExtra{normals need not be unit length; a zero or non-finite normal is an error}
+    \cgalParamNEnd
+    \cgalParamNBegin{geom_traits}
+      \cgalParamDescription{an instance of a geometric traits class}
+      \cgalParamType{a model of `Kernel`}
+      \cgalParamDefault{the kernel deduced from the point type of `point_map`}
+      \cgalParamExtra{the computation itself runs in `double`}
+    \cgalParamNEnd
+    \cgalParamNBegin{barycenter}
+      \cgalParamDescription{the centre of the covariance matrix}
+      \cgalParamType{`Barycenter`}
+      \cgalParamDefault{`Barycenter::WEIGHTED`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
   \pre at least `k + 1` points, `k >= 1`; finite coordinates; non-zero finite normals
        (otherwise `std::invalid_argument`)
+  \return the output iterator past the last record
+  \sa `compute_optimal_sigmoid_neighborhoods()`, which searches `(a, b, k)` for every point
 */
 template <typename ConcurrencyTag, typename PointRange, typename OutputIterator,
           typename CGAL_NP_TEMPLATE_PARAMETERS>
@@ -90,10 +134,45 @@ OutputIterator compute_sigmoid_features(const PointRange& points, const Cosine_s
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
-  \brief the same features on the vertices of a `Surface_mesh`, with the vertex handling of
-  `compute_optimal_sigmoid_neighborhoods()`; left-out vertices get a degenerate record.
-  \tparam VertexFeatureMap a `WritablePropertyMap` from vertex descriptors to `Dimensionality_features`
-  \param np optional: `vertex_normal_map` (CGAL) and `barycenter`
+  \brief computes the same features on the vertices of a `CGAL::Surface_mesh`, with the vertex
+  handling of `compute_optimal_sigmoid_neighborhoods()`: vertex normals from
+  `CGAL::Polygon_mesh_processing::compute_vertex_normals()` unless `vertex_normal_map` is given,
+  vertices at one position merged (the smallest index is computed, its copies get its record),
+  vertices without a face or with an undefined normal left out (they get a degenerate record).
+
+  \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+          `CGAL::Sigmoid_neighborhoods::Parallel_if_available_tag`
+  \tparam Point the point type of the mesh, a `Point_3` of a CGAL kernel
+  \tparam VertexFeatureMap a model of `WritablePropertyMap` with the mesh's vertex descriptor as
+          key type and `Dimensionality_features` as value type
+  \tparam NamedParameters a sequence of named parameters
+
+  \param mesh the input mesh; vertex positions are read from `mesh.points()`
+  \param sigmoid the weights `sig_{a,b}`
+  \param k the number of neighbors of each point
+  \param vertex_features receives the record of every vertex
+  \param np an optional sequence of named parameters among the ones listed below: CGAL's
+    (`CGAL::parameters`) and the package's (`CGAL::Sigmoid_neighborhoods::parameters`, which come
+    first in a chain, see \ref Sigmoid_neighborhoods_named_parameters)
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_normal_map}
+      \cgalParamDescription{a property map associating oriented normals to the vertices of `mesh`}
+      \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as key type and
+        a `Vector_3` of the kernel of `Point` as value type}
+      \cgalParamDefault{the normals of `CGAL::Polygon_mesh_processing::compute_vertex_normals()`}
+      \cgalParamExtra{a vertex whose normal is zero or not finite is left out}
+    \cgalParamNEnd
+    \cgalParamNBegin{barycenter}
+      \cgalParamDescription{the centre of the covariance matrix}
+      \cgalParamType{`Barycenter`}
+      \cgalParamDefault{`Barycenter::WEIGHTED`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  \pre at least `k + 1` points after merging, `k >= 1`; finite coordinates
+       (otherwise `std::invalid_argument`)
+  \return how the vertices became points
 */
 template <typename ConcurrencyTag, typename Point, typename VertexFeatureMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Mesh_points_summary compute_sigmoid_features(const CGAL::Surface_mesh<Point>& mesh, const Cosine_sigmoid& sigmoid,
