@@ -22,7 +22,7 @@ namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsRef
+  \ingroup PkgSigmoidNeighborhoodsEvaluation
   the outcome of lowering `a*` (or `b*`) to the next smaller grid value at the same `k*`:
   the columns `a-` / `not a-` (`b-` / `not b-`) of the paper's Table 3.
 */
@@ -34,10 +34,11 @@ enum class Lowering
 };
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsRef
+  \ingroup PkgSigmoidNeighborhoodsEvaluation
   everything the evaluation of the paper's Section 5 needs at one point: the optimal triple with
   the equal-weights baseline, the sharp cut-off `a = b = cut_off_angle` at its best `k`, equal
-  weights at a fixed `k`, and the Table 3 lowering tests.
+  weights at a fixed `k`, and the Table 3 lowering tests. Written by
+  `evaluate_sigmoid_neighborhoods()`, summed up by `Evaluation_statistics::add()`.
 */
 struct Point_evaluation
 {
@@ -45,8 +46,10 @@ struct Point_evaluation
   Dimensionality equal_label = Dimensionality::DEGENERATE; ///< the label with equal weights at `k_equal`
   double error_cut_off = std::numeric_limits<double>::infinity(); ///< least `E_dim` of the cut-off over `K`
   unsigned int k_cut_off = 0;                              ///< its `k`, 0 when it fails at every `k`
+  /// the label of the cut-off at `k_cut_off`, `DEGENERATE` when it fails at every `k`
   Dimensionality cut_off_label = Dimensionality::DEGENERATE;
   double error_fixed_k = std::numeric_limits<double>::infinity(); ///< `E_dim` with equal weights at `fixed_k`
+  /// the label with equal weights at `fixed_k`
   Dimensionality fixed_k_label = Dimensionality::DEGENERATE;
   Lowering a_lowering = Lowering::AT_BOTTOM; ///< meaningless for a failure
   Lowering b_lowering = Lowering::AT_BOTTOM; ///< meaningless for a failure
@@ -133,17 +136,102 @@ std::vector<Point_evaluation> evaluate_all(const Oriented_points& input, const S
 /// \endcond
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsRef
+  \ingroup PkgSigmoidNeighborhoodsEvaluation
   \brief evaluates every point as the paper's Section 5 does: the optimal `(a*, b*, k*)`, equal
   weights and the sharp cut-off `a = b = cut_off_angle` each at their best `k`, equal weights at
   `fixed_k`, and the Table 3 tests of lowering `a*` and `b*` by one grid step.
 
   One k-NN query per point serves all of them. Results do not depend on the number of threads.
+  The optimal triple and the equal-weights baseline are those of
+  `compute_optimal_sigmoid_neighborhoods()`, with the same tie rule.
 
-  \param np the named parameters of `compute_optimal_sigmoid_neighborhoods()`, and
-    - `Sigmoid_neighborhoods::parameters::cut_off_angle` (default `acos(0.9)`),
-    - `Sigmoid_neighborhoods::parameters::fixed_k` (default `k_max`, within `[k_min, k_max]`).
+  \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+          `CGAL::Sigmoid_neighborhoods::Parallel_if_available_tag`
+  \tparam PointRange a model of `ConstRange` whose value type is the key type of the maps
+  \tparam OutputIterator an output iterator accepting `Point_evaluation`
+  \tparam NamedParameters a sequence of named parameters
+
+  \param points the input points, with oriented normals
+  \param output receives one record per point, in the order of `points`
+  \param np an optional sequence of named parameters among the ones listed below: CGAL's
+    (`CGAL::parameters`) and the package's (`CGAL::Sigmoid_neighborhoods::parameters`, which come
+    first in a chain, see \ref Sigmoid_neighborhoods_named_parameters)
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{point_map}
+      \cgalParamDescription{a property map associating points to the elements of `points`}
+      \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of `PointRange`
+        and whose value type is a `Point_3` of a CGAL kernel}
+      \cgalParamDefault{`CGAL::Identity_property_map<Point_3>`}
+      \cgalParamExtra{coordinates are converted to `double`; they must be finite}
+    \cgalParamNEnd
+    \cgalParamNBegin{normal_map}
+      \cgalParamDescription{a property map associating oriented normals to the elements of `points`}
+      \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of `PointRange`
+        and whose value type is a `Vector_3` of a CGAL kernel}
+      \cgalParamDefault{none: required (a static assertion fails without it), except for a
+        `CGAL::Point_set_3`, whose normal map is the default}
+      \cgalParamExtra{normals need not be unit length; a zero or non-finite normal is an error}
+    \cgalParamNEnd
+    \cgalParamNBegin{geom_traits}
+      \cgalParamDescription{an instance of a geometric traits class}
+      \cgalParamType{a model of `Kernel`}
+      \cgalParamDefault{the kernel deduced from the point type of `point_map`}
+      \cgalParamExtra{the computation itself runs in `double`}
+    \cgalParamNEnd
+    \cgalParamNBegin{k_min}
+      \cgalParamDescription{the smallest neighborhood size of the search, `K = {k_min, ..., k_max}`}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{`DEFAULT_K_MIN` (6)}
+      \cgalParamExtra{`1 <= k_min <= k_max`, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+    \cgalParamNBegin{k_max}
+      \cgalParamDescription{the largest neighborhood size of the search}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{`DEFAULT_K_MAX` (20)}
+      \cgalParamExtra{at least `k_max + 1` points are needed}
+    \cgalParamNEnd
+    \cgalParamNBegin{a_grid}
+      \cgalParamDescription{the values of `a` (radians) that the search visits}
+      \cgalParamType{`std::vector<double>`}
+      \cgalParamDefault{`default_angle_grid()`: `{0, pi/6, pi/3, pi/2, 2pi/3, 5pi/6, pi}`}
+      \cgalParamExtra{values in `[0, pi]`, sorted and deduplicated; only pairs with `a <= b` are searched}
+    \cgalParamNEnd
+    \cgalParamNBegin{b_grid}
+      \cgalParamDescription{the values of `b` (radians) that the search visits}
+      \cgalParamType{`std::vector<double>`}
+      \cgalParamDefault{`default_angle_grid()`}
+      \cgalParamExtra{as `a_grid`; at least one pair `a <= b` must exist}
+    \cgalParamNEnd
+    \cgalParamNBegin{barycenter}
+      \cgalParamDescription{the centre of the covariance matrix}
+      \cgalParamType{`Barycenter`}
+      \cgalParamDefault{`Barycenter::WEIGHTED`}
+    \cgalParamNEnd
+    \cgalParamNBegin{angle_tolerance}
+      \cgalParamDescription{angles between normals up to it (radians) count as 0}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`DEFAULT_ANGLE_TOLERANCE` (`1e-6`)}
+      \cgalParamExtra{in `[0, pi)`, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+    \cgalParamNBegin{cut_off_angle}
+      \cgalParamDescription{the angle `a = b` (radians) of the sharp cut-off weights}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`std::acos(0.9)`}
+      \cgalParamExtra{in `[0, pi]`, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+    \cgalParamNBegin{fixed_k}
+      \cgalParamDescription{the neighborhood size of the fixed-`k` equal-weights baseline}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{the value of `k_max`}
+      \cgalParamExtra{in `[k_min, k_max]`, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  \pre at least `k_max + 1` points; finite coordinates; non-zero finite normals
+  (otherwise `std::invalid_argument`)
   \return the output iterator past the last `Point_evaluation`
+  \sa `Evaluation_statistics`, which sums the records up
 */
 template <typename ConcurrencyTag, typename PointRange, typename OutputIterator,
           typename CGAL_NP_TEMPLATE_PARAMETERS>

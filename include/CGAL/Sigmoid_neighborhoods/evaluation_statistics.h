@@ -20,7 +20,7 @@ namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsRef
+  \ingroup PkgSigmoidNeighborhoodsEvaluation
   mergeable statistics of `E_dim` under one weighting (SPEC §6): counts, sums, extremes, labels and
   the histogram of the chosen `k`. Two disjoint parts merge into exactly the statistics of the whole
   (counts, extremes, histograms); sums agree up to rounding, and exactly when merged in the same order.
@@ -29,13 +29,21 @@ struct Error_statistics
 {
   std::size_t count = 0;     ///< points with a finite error
   std::size_t failures = 0;  ///< points where the weighting is degenerate at every `k`
+  /// the sum of the finite errors
   double sum = 0.;
+  /// the sum of their squares
   double sum_of_squares = 0.;
+  /// the least finite error, `+inf` when there is none
   double min = std::numeric_limits<double>::infinity();
+  /// the largest finite error, `-inf` when there is none
   double max = -std::numeric_limits<double>::infinity();
   std::array<std::size_t, 3> labels{{0, 0, 0}}; ///< linear, planar, scattered
   std::vector<std::size_t> k_histogram;         ///< index `k - k_min`; empty for a fixed `k`
 
+  /*!
+    adds one point: a failure when `error` is not finite, otherwise its error, its `label` and,
+    when `k_histogram` is not empty, its `k` (counted at `k - k_min`).
+  */
   void add(double error, Dimensionality label, unsigned int k, unsigned int k_min)
   {
     if(!std::isfinite(error))
@@ -54,6 +62,10 @@ struct Error_statistics
       ++k_histogram[k - k_min];
   }
 
+  /*!
+    adds the statistics of disjoint points.
+    \pre `other.k_histogram` has the size of `k_histogram`, otherwise `std::invalid_argument`
+  */
   void merge(const Error_statistics& other)
   {
     count += other.count;
@@ -70,8 +82,9 @@ struct Error_statistics
       k_histogram[i] += other.k_histogram[i];
   }
 
+  /// the mean finite error, NaN when `count == 0`
   double mean() const { return count ? sum / double(count) : std::numeric_limits<double>::quiet_NaN(); }
-  /// population standard deviation
+  /// the population standard deviation of the finite errors, NaN when `count == 0`
   double standard_deviation() const
   {
     if(!count)
@@ -82,15 +95,23 @@ struct Error_statistics
 };
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsRef
+  \ingroup PkgSigmoidNeighborhoodsEvaluation
   mergeable statistics of a model or a repository under the weightings of the paper's Section 5:
   Table 2 (`E_dim` per weighting), Table 3 (lowering `a*`, `b*`), Figure 4 (`(a*, b*)` split by `k*`)
   and Figure 5 (`k*`).
 */
 struct Evaluation_statistics
 {
+  /// \name Sizes and Grids
+  /// The sizes `{k_min, ..., k_max}` and the grids of `a` and `b` (sorted, deduplicated) of the evaluation.
+  /// @{
+
+  /// the smallest and the largest `k`
   unsigned int k_min = 0, k_max = 0;
+  /// the grids of `a` and of `b`
   std::vector<double> a_grid, b_grid;
+  /// @}
+  /// the points added, failures included
   std::size_t points = 0;
   Error_statistics equal;    ///< `a = b = pi`, best `k`
   Error_statistics cut_off;  ///< `a = b = cut_off_angle`, best `k`
@@ -101,7 +122,13 @@ struct Evaluation_statistics
   std::array<std::size_t, 3> a_lowering{{0, 0, 0}}; ///< `a = 0`, `a-`, `not a-`
   std::array<std::size_t, 3> b_lowering{{0, 0, 0}}; ///< `b = a`, `b-`, `not b-`
 
+  /// empty statistics without grids, to be assigned; only statistics with equal grids merge.
   Evaluation_statistics() = default;
+  /*!
+    empty statistics of the evaluation with the sizes `{k_min_, ..., k_max_}` and the grids `a`, `b`
+    (sorted and deduplicated here), as given to `evaluate_sigmoid_neighborhoods()`.
+    \pre `k_min_ <= k_max_` (not checked)
+  */
   Evaluation_statistics(unsigned int k_min_, unsigned int k_max_, std::vector<double> a, std::vector<double> b)
     : k_min(k_min_), k_max(k_max_), a_grid(std::move(a)), b_grid(std::move(b))
   {
@@ -127,6 +154,7 @@ struct Evaluation_statistics
     return result;
   }
 
+  /// adds the record of one point, as `evaluate_sigmoid_neighborhoods()` writes it.
   void add(const Point_evaluation& e)
   {
     ++points;
@@ -145,6 +173,10 @@ struct Evaluation_statistics
     ++b_lowering[std::size_t(e.b_lowering)];
   }
 
+  /*!
+    adds the statistics of disjoint points (another shard, model or repository).
+    \pre equal `k_min`, `k_max`, `a_grid` and `b_grid`, otherwise `std::invalid_argument`
+  */
   void merge(const Evaluation_statistics& other)
   {
     if(other.k_min != k_min || other.k_max != k_max || other.a_grid != a_grid || other.b_grid != b_grid)
