@@ -44,11 +44,17 @@ namespace Sigmoid_neighborhoods {
 /*!
   \ingroup PkgSigmoidNeighborhoodsIO
   a point set with oriented unit normals read from a file, and how it was obtained (SPEC §1).
+  Returned by `read_oriented_point_set()`; its `points` and `normals` go to
+  `compute_optimal_sigmoid_neighborhoods()` with `CGAL::make_property_map()` maps over the indices
+  `0, ..., points.size() - 1`, as the command-line tool does.
 */
 struct Oriented_point_set
 {
+  /// the kernel of the points and normals
   typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+  /// the point type
   typedef Kernel::Point_3 Point_3;
+  /// the normal type
   typedef Kernel::Vector_3 Vector_3;
 
   std::vector<Point_3> points;   ///< distinct points, in input order
@@ -312,6 +318,12 @@ inline void estimate_normals(Oriented_point_set& out, unsigned int neighbors)
   Point sets: duplicates merged, the first kept; without normals, normals are estimated by jet
   fitting and oriented by a minimum spanning tree over `estimation_neighbors` neighbors; with
   `estimation_neighbors = 0` they are not estimated and `normals` comes back empty.
+
+  \param filename the file; its extension (any case) selects the format: `.off`, `.obj`, `.ply`,
+  `.stl`, `.xyz` or `.pwn`
+  \param estimation_neighbors the number of neighbors of the normal estimation and orientation of
+  point sets without normals; 0 leaves them without normals
+  \return the points, their normals, and counts of merged, dropped and unoriented points
 
   \throws Input_error with a one-line message on anything unusable: a missing, unreadable or empty
   file, an unknown extension, a syntax error, non-finite coordinates, zero or non-finite normals,
