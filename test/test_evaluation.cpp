@@ -288,3 +288,13 @@ TEST_CASE("report: renders for one and for two repositories", "[evaluation][cli]
   if(can_plot)
     CHECK(fs::exists(out("report2") / "figure3_per_point.png"));
 }
+
+TEST_CASE("evaluate: a symbolic link is named by its own path and written inside OUTDIR", "[evaluation][cli]")
+{
+  const fs::path linked = out("linked");
+  fs::create_directories(linked / "in");
+  fs::create_symlink(models() / "cubes" / "cube4.off", linked / "in" / "alias.off");
+  REQUIRE(run("evaluate " + (linked / "in").string() + " -o " + (linked / "out").string()) == 0);
+  CHECK(fs::exists(linked / "out" / "models" / "alias.off.json"));
+  CHECK(read_text(linked / "out" / "summary.json").find("\"models\": 1") != std::string::npos);
+}

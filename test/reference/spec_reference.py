@@ -51,7 +51,9 @@ def knn(P, kmax, queries):
 def angles(N, nbr, angle_tol):
     """x_ij = angle(n_i, n_j) in [0, pi]; angles <= angle_tol count as exactly 0 (SPEC 3 decision)."""
     dots = (N[nbr] * N[nbr[:, :1]]).sum(axis=2)
-    x = np.arccos(np.clip(dots, -1.0, 1.0))
+    # The C library's acos, correctly rounded: numpy's arccos can differ by one ulp, which decides
+    # whether a normal exactly at a grid angle (e.g. perpendicular, pi/2) is kept by a cut-off.
+    x = np.frompyfunc(math.acos, 1, 1)(np.clip(dots, -1.0, 1.0)).astype(np.float64)
     x[x <= angle_tol] = 0.0
     return x
 

@@ -63,7 +63,8 @@ inline std::vector<Model_file> find_models(const std::vector<std::string>& input
       for(auto it = fs::recursive_directory_iterator(root, fs::directory_options::skip_permission_denied, ec);
           it != fs::recursive_directory_iterator(); it.increment(ec))
         if(it->is_regular_file(ec) && is_model_extension(it->path()))
-          models.push_back({fs::relative(it->path(), root).generic_string(), it->path().string(), it->file_size(ec)});
+          // lexically: a symbolic link is named by its own path, not by its target's
+          models.push_back({it->path().lexically_relative(root).generic_string(), it->path().string(), it->file_size(ec)});
     }
     else if(fs::is_regular_file(root, ec))
       models.push_back({root.filename().generic_string(), root.string(), fs::file_size(root, ec)});

@@ -92,6 +92,8 @@ public:
   }
 
   std::size_t size() const { return m_offsets.size(); }
+  const Eigen::Vector3d& offset(std::size_t j) const { return m_offsets[j]; }
+  double squared_radius(unsigned int k) const { return m_squared_radius[k]; }
 
   // w_ij for all j in N_i(k_max); w_ii = sig(0) = 1.
   void weights(const Cosine_sigmoid& sigmoid, double* w) const

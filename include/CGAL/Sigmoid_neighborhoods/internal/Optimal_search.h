@@ -11,6 +11,10 @@
 #include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -23,9 +27,17 @@ constexpr double TIE_TOLERANCE = 1e-12;
 
 namespace internal {
 
+// An approximation of E_dim is trusted to this absolute accuracy (see approximate_errors()).
+constexpr double APPROXIMATION_MARGIN = 1e-5;
+
 // The search of SPEC §5 at every point: one k_max query per point, every (a, b, k) of the grid
-// evaluated from it. Pairs whose weights agree on N_i(k) share the result of the first of them:
-// the same inputs through the same code give the same bits, so this changes nothing but time.
+// evaluated from it, with the result of the plain loop bit for bit. Two things save time:
+// - pairs whose weights agree on N_i(k) share the exact result of the first of them (the same
+//   inputs through the same code give the same bits);
+// - every triple first gets a cheap approximate error (moments accumulated over k, closed-form
+//   eigenvalues); the exact error (two-pass covariance, iterative eigen solver) is computed only
+//   where the approximation cannot rule out that the triple replaces the best so far. As the best
+//   so far is always exact, the visiting order and the tie rule decide exactly as in the plain loop.
 class Optimal_search
 {
 public:
@@ -34,7 +46,9 @@ public:
     std::vector<Neighbor> neighbors;
     Local_neighborhood local;
     std::vector<double> weights; // pair-major, k_max + 1 per pair
-    std::vector<double> errors;  // pair-major, one per k
+    std::vector<double> approx;  // pair-major, one per k; NaN: not trusted
+    std::vector<double> exact;   // pair-major, one per k; NaN: not computed yet
+    std::vector<std::size_t> shared, source; // per pair: prefix shared with an earlier pair
   };
 
   Optimal_search(const Oriented_points& input, const Search_settings& settings)
@@ -49,45 +63,55 @@ public:
   {
     Scratch s;
     s.weights.resize(m_sigmoids.size() * (m_settings.k_max + 1));
-    s.errors.resize(m_sigmoids.size() * m_settings.number_of_sizes());
+    s.approx.resize(m_sigmoids.size() * m_settings.number_of_sizes());
+    s.exact.resize(m_sigmoids.size() * m_settings.number_of_sizes());
+    s.shared.resize(m_sigmoids.size());
+    s.source.resize(m_sigmoids.size());
     return s;
   }
 
   Optimal_sigmoid_neighborhood operator()(std::uint32_t i, Scratch& s) const
   {
     const unsigned int k_min = m_settings.k_min, k_max = m_settings.k_max;
-    const std::size_t m = k_max + 1, sizes = m_settings.number_of_sizes();
+    const std::size_t m = k_max + 1, sizes = m_settings.number_of_sizes(), pairs = m_sigmoids.size();
+    const double not_yet = std::numeric_limits<double>::quiet_NaN();
     m_query.query(i, k_max, s.neighbors);
     s.local.assign(m_input, i, s.neighbors);
+    std::fill(s.exact.begin(), s.exact.end(), not_yet);
 
-    double best = std::numeric_limits<double>::infinity();
-    std::size_t best_pair = 0;
-    unsigned int best_k = 0;
-    for(std::size_t p = 0; p < m_sigmoids.size(); ++p)
+    for(std::size_t p = 0; p < pairs; ++p)
     {
       double* w = &s.weights[p * m];
       s.local.weights(m_sigmoids[p], w);
       // The earlier pair sharing the longest prefix of weights with this one.
-      std::size_t shared = 0, source = 0;
-      for(std::size_t q = 0; q < p && shared < m; ++q)
+      s.shared[p] = 0;
+      s.source[p] = p;
+      for(std::size_t q = 0; q < p && s.shared[p] < m; ++q)
       {
         const double* v = &s.weights[q * m];
         std::size_t l = 0;
         while(l < m && v[l] == w[l])
           ++l;
-        if(l > shared)
+        if(l > s.shared[p])
         {
-          shared = l;
-          source = q;
+          s.shared[p] = l;
+          s.source[p] = q;
         }
       }
+      approximate_errors(s.local, w, &s.approx[p * sizes]);
+    }
+
+    // The scan of SPEC §5, exact wherever it matters.
+    double best = std::numeric_limits<double>::infinity();
+    std::size_t best_pair = 0;
+    unsigned int best_k = 0;
+    for(std::size_t p = 0; p < pairs; ++p)
       for(unsigned int k = k_min; k <= k_max; ++k)
       {
-        const std::size_t slot = k - k_min;
-        const double error = (std::size_t(k) + 1 <= shared)
-                               ? s.errors[source * sizes + slot]
-                               : s.local.features(w, k, m_settings.barycenter).error;
-        s.errors[p * sizes + slot] = error;
+        const double approx = s.approx[p * sizes + (k - k_min)];
+        if(approx - APPROXIMATION_MARGIN >= best - TIE_TOLERANCE) // also false for NaN: not trusted
+          continue;
+        const double error = exact_error(s, p, k);
         if(error < best - TIE_TOLERANCE)
         {
           best = error;
@@ -95,7 +119,6 @@ public:
           best_k = k;
         }
       }
-    }
 
     Optimal_sigmoid_neighborhood result;
     if(best_k != 0)
@@ -107,28 +130,135 @@ public:
     }
 
     // Equal weights, best k with the same tie rule.
-    const double* equal_errors = nullptr;
     if(m_equal_pair >= 0)
-      equal_errors = &s.errors[std::size_t(m_equal_pair) * sizes];
+    {
+      const std::size_t p = std::size_t(m_equal_pair);
+      for(unsigned int k = k_min; k <= k_max; ++k)
+      {
+        const double approx = s.approx[p * sizes + (k - k_min)];
+        if(approx - APPROXIMATION_MARGIN >= result.error_equal - TIE_TOLERANCE)
+          continue;
+        const double error = exact_error(s, p, k);
+        if(error < result.error_equal - TIE_TOLERANCE)
+        {
+          result.error_equal = error;
+          result.k_equal = k;
+        }
+      }
+    }
     else
     {
       const std::vector<double> ones(m, 1.);
       for(unsigned int k = k_min; k <= k_max; ++k)
-        s.errors[k - k_min] = s.local.features(ones.data(), k, m_settings.barycenter).error;
-      equal_errors = s.errors.data();
-    }
-    for(unsigned int k = k_min; k <= k_max; ++k)
-      if(equal_errors[k - k_min] < result.error_equal - TIE_TOLERANCE)
       {
-        result.error_equal = equal_errors[k - k_min];
-        result.k_equal = k;
+        const double error = s.local.features(ones.data(), k, m_settings.barycenter).error;
+        if(error < result.error_equal - TIE_TOLERANCE)
+        {
+          result.error_equal = error;
+          result.k_equal = k;
+        }
       }
+    }
     return result;
   }
 
   std::size_t size() const { return m_input.size(); }
 
 private:
+  // The exact error of (pair p, k), computed once for all pairs that share the weights of N_i(k).
+  double exact_error(Scratch& s, std::size_t p, unsigned int k) const
+  {
+    while(s.source[p] != p && std::size_t(k) + 1 <= s.shared[p])
+      p = s.source[p];
+    double& slot = s.exact[p * m_settings.number_of_sizes() + (k - m_settings.k_min)];
+    if(std::isnan(slot))
+      slot = s.local.features(&s.weights[p * (m_settings.k_max + 1)], k, m_settings.barycenter).error;
+    return slot;
+  }
+
+  // Approximate E_dim for every k, from moments accumulated over the neighbors (one pass) and
+  // Eigen's closed-form eigenvalues. NaN where the approximation may be off by more than
+  // APPROXIMATION_MARGIN: close to the degenerate threshold, where the moments cancel, or where
+  // the eigenvalues nearly coincide (closed forms lose up to 1e-8 lambda1 there, which moves E by
+  // at most about 1e-6; the margin keeps a factor 10 above that).
+  void approximate_errors(const Local_neighborhood& local, const double* w, double* approx) const
+  {
+    const unsigned int k_min = m_settings.k_min, k_max = m_settings.k_max;
+    const bool weighted = m_settings.barycenter == Barycenter::WEIGHTED;
+    double s0 = 0., sx = 0., sy = 0., sz = 0., sxx = 0., syx = 0., szx = 0., syy = 0., szy = 0., szz = 0.;
+    double ux = 0., uy = 0., uz = 0.; // plain sums, for the unweighted barycenter
+    bool others = false;              // a neighbor other than the point itself has weight
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
+    for(unsigned int j = 0; j <= k_max; ++j)
+    {
+      const Eigen::Vector3d& q = local.offset(j);
+      ux += q[0];
+      uy += q[1];
+      uz += q[2];
+      const double wj = w[j];
+      if(wj != 0.)
+      {
+        others = others || j > 0;
+        s0 += wj;
+        sx += wj * q[0];
+        sy += wj * q[1];
+        sz += wj * q[2];
+        sxx += wj * q[0] * q[0];
+        syx += wj * q[1] * q[0];
+        szx += wj * q[2] * q[0];
+        syy += wj * q[1] * q[1];
+        szy += wj * q[2] * q[1];
+        szz += wj * q[2] * q[2];
+      }
+      if(j < k_min)
+        continue;
+      double& out = approx[j - k_min];
+      if(weighted && !others)
+      {
+        out = std::numeric_limits<double>::infinity(); // the point alone: C = 0 exactly, degenerate
+        continue;
+      }
+      // C = S2 - c S1^T - S1 c^T + S0 c c^T, with c the barycenter
+      double cx, cy, cz;
+      if(weighted)
+      {
+        cx = sx / s0;
+        cy = sy / s0;
+        cz = sz / s0;
+      }
+      else
+      {
+        cx = ux / double(j + 1);
+        cy = uy / double(j + 1);
+        cz = uz / double(j + 1);
+      }
+      Eigen::Matrix3d c;
+      c(0, 0) = sxx - 2. * cx * sx + s0 * cx * cx;
+      c(1, 0) = syx - cy * sx - cx * sy + s0 * cy * cx;
+      c(2, 0) = szx - cz * sx - cx * sz + s0 * cz * cx;
+      c(1, 1) = syy - 2. * cy * sy + s0 * cy * cy;
+      c(2, 1) = szy - cz * sy - cy * sz + s0 * cz * cy;
+      c(2, 2) = szz - 2. * cz * sz + s0 * cz * cz;
+      const double trace = c(0, 0) + c(1, 1) + c(2, 2);
+      // the size of the terms that cancelled: the rounding error of C is about 1e-16 of it
+      const double cancelled = sxx + syy + szz + s0 * (cx * cx + cy * cy + cz * cz);
+      if(!(trace > 1e-6 * s0 * local.squared_radius(j)) || !(trace > 1e-6 * cancelled))
+      {
+        out = std::numeric_limits<double>::quiet_NaN();
+        continue;
+      }
+      solver.computeDirect(c, Eigen::EigenvaluesOnly);
+      const Eigen::Vector3d& ev = solver.eigenvalues();
+      const double l1 = ev[2], l2 = ev[1], l3 = ev[0];
+      if(!(l1 > 0.) || (l1 - l3) < 1e-3 * l1)
+      {
+        out = std::numeric_limits<double>::quiet_NaN();
+        continue;
+      }
+      out = dimensionality_features_from_eigenvalues(l1, l2, l3).error;
+    }
+  }
+
   const Oriented_points& m_input;
   Search_settings m_settings;
   std::vector<Cosine_sigmoid> m_sigmoids;
