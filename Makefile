@@ -3,7 +3,8 @@
 #
 # Quick start on a fresh Debian/Ubuntu machine:
 #   make evaluate   # installs dependencies, builds, runs the main job, writes results/
-#   make test       # installs dependencies, builds, runs every test
+#   make test       # installs dependencies, builds, builds the manual, runs every test
+#   make doc        # the manual only: $(BUILD_DIR)/doc/html/index.html
 
 BUILD_DIR ?= build
 RESULTS_DIR ?= results
@@ -15,7 +16,7 @@ CGAL_DATA_ARCHIVE = /usr/share/doc/libcgal-dev/data.tar.gz
 CORPUS_DIR = $(BUILD_DIR)/cgal-data
 TOOL = $(BUILD_DIR)/tools/sigmoid-neighborhoods/sigmoid-neighborhoods
 
-.PHONY: all deps configure build test evaluate corpus clean
+.PHONY: all deps configure build doc test evaluate corpus clean
 
 all: build
 
@@ -38,7 +39,21 @@ configure: deps
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
-test: build
+# The manual (Doxygen, doc/Sigmoid_neighborhoods/), written to $(BUILD_DIR)/doc/html/. Fails when
+# doxygen reports anything: every warning (an undocumented public name, a broken reference) is an error.
+DOC_DIR = $(BUILD_DIR)/doc
+doc: deps
+	@rm -rf $(DOC_DIR)/html && mkdir -p $(DOC_DIR)
+	@( cat doc/Sigmoid_neighborhoods/Doxyfile; echo "OUTPUT_DIRECTORY = $(DOC_DIR)" ) | doxygen - 2> $(DOC_DIR)/warnings.log; \
+	status=$$?; \
+	if [ $$status -ne 0 ] || [ -s $(DOC_DIR)/warnings.log ]; then \
+	  cat $(DOC_DIR)/warnings.log >&2; \
+	  echo "make doc: doxygen failed or warned (exit code $$status, $$(grep -c . $(DOC_DIR)/warnings.log) lines above)" >&2; \
+	  exit 1; \
+	fi
+	@echo "Manual: $(DOC_DIR)/html/index.html (0 doxygen warnings)"
+
+test: build doc
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
 # The embedded default corpus: the public data of Debian's libcgal-demo.
