@@ -86,9 +86,10 @@ inline bool is_degenerate_triple(const Local_neighborhood& local, double a, doub
   return local.covariance(w.data(), k, s.barycenter).is_degenerate();
 }
 
-template <typename ConcurrencyTag>
-std::vector<Point_evaluation> evaluate_all(const Oriented_points& input, const Search_settings& settings,
-                                           double cut_off_angle, unsigned int fixed_k)
+// `sink(i, evaluation)` receives the evaluations in index order.
+template <typename ConcurrencyTag, typename Sink>
+void evaluate_all(const Oriented_points& input, const Search_settings& settings, double cut_off_angle,
+                  unsigned int fixed_k, const Sink& sink)
 {
   check_enough_points(input.size(), settings.k_max);
   if(!(fixed_k >= settings.k_min && fixed_k <= settings.k_max))
@@ -96,16 +97,15 @@ std::vector<Point_evaluation> evaluate_all(const Oriented_points& input, const S
   const Cosine_sigmoid cut_off(cut_off_angle, cut_off_angle, settings.angle_tolerance);
   const Cosine_sigmoid equal(PI, PI, settings.angle_tolerance);
   const Optimal_search search(input, settings);
-  std::vector<Point_evaluation> result(input.size());
   struct Scratch
   {
     Optimal_search::Scratch search;
     std::vector<double> w;
   };
-  for_each_index<ConcurrencyTag>(
+  for_each_index_in_blocks<ConcurrencyTag, Point_evaluation>(
     input.size(), [&search] { return Scratch{search.make_scratch(), {}}; },
     [&](std::size_t i, Scratch& s) {
-      Point_evaluation& e = result[i];
+      Point_evaluation e;
       e.optimal = search(static_cast<std::uint32_t>(i), s.search);
       const Local_neighborhood& local = s.search.local; // N_i(k_max) of point i, from the search
       best_k(local, cut_off, settings, s.w, e.error_cut_off, e.k_cut_off, e.cut_off_label);
@@ -116,7 +116,7 @@ std::vector<Point_evaluation> evaluate_all(const Oriented_points& input, const S
       e.error_fixed_k = fixed.error;
       e.fixed_k_label = fixed.label;
       if(e.optimal.is_failure())
-        return;
+        return e;
       // Table 3: the next smaller grid value of a (same b*, k*), and of b that stays >= a* (same a*, k*).
       const auto& A = settings.a_grid;
       const auto& B = settings.b_grid;
@@ -128,8 +128,9 @@ std::vector<Point_evaluation> evaluate_all(const Oriented_points& input, const S
       if(e.optimal.b != e.optimal.a && b_it != B.begin() && *(b_it - 1) >= e.optimal.a)
         e.b_lowering = is_degenerate_triple(local, e.optimal.a, *(b_it - 1), e.optimal.k, settings, s.w)
                          ? Lowering::FAILS : Lowering::STILL_VALID;
-    });
-  return result;
+      return e;
+    },
+    sink);
 }
 
 } // namespace internal
@@ -247,8 +248,8 @@ OutputIterator evaluate_sigmoid_neighborhoods(const PointRange& points, OutputIt
   const internal::Search_settings settings = internal::search_settings(np);
   const double cut_off = choose_parameter(get_parameter(np, internal_np::cut_off_angle), std::acos(0.9));
   const unsigned int fixed_k = choose_parameter(get_parameter(np, internal_np::fixed_k), settings.k_max);
-  for(const Point_evaluation& e : internal::evaluate_all<ConcurrencyTag>(input, settings, cut_off, fixed_k))
-    *output++ = e;
+  internal::evaluate_all<ConcurrencyTag>(input, settings, cut_off, fixed_k,
+                                         [&output](std::size_t, const Point_evaluation& e) { *output++ = e; });
   return output;
 }
 

@@ -98,7 +98,9 @@ public:
           s.source[p] = q;
         }
       }
-      approximate_errors(s.local, w, &s.approx[p * sizes]);
+      approximate_errors(s.local, w, s.shared[p], &s.approx[p * sizes]);
+      for(unsigned int k = k_min; std::size_t(k) + 1 <= s.shared[p] && k <= k_max; ++k)
+        s.approx[p * sizes + (k - k_min)] = s.approx[s.source[p] * sizes + (k - k_min)];
     }
 
     // The scan of SPEC §5, exact wherever it matters.
@@ -181,7 +183,8 @@ private:
   // APPROXIMATION_MARGIN: close to the degenerate threshold, where the moments cancel, or where
   // the eigenvalues nearly coincide (closed forms lose up to 1e-8 lambda1 there, which moves E by
   // at most about 1e-6; the margin keeps a factor 10 above that).
-  void approximate_errors(const Local_neighborhood& local, const double* w, double* approx) const
+  // Sizes k with k + 1 <= shared are left alone: an earlier pair with the same weights has them.
+  void approximate_errors(const Local_neighborhood& local, const double* w, std::size_t shared, double* approx) const
   {
     const unsigned int k_min = m_settings.k_min, k_max = m_settings.k_max;
     const bool weighted = m_settings.barycenter == Barycenter::WEIGHTED;
@@ -210,7 +213,7 @@ private:
         szy += wj * q[2] * q[1];
         szz += wj * q[2] * q[2];
       }
-      if(j < k_min)
+      if(j < k_min || std::size_t(j) + 1 <= shared)
         continue;
       double& out = approx[j - k_min];
       if(weighted && !others)
@@ -272,14 +275,10 @@ void optimal_search_all(const Oriented_points& input, const Search_settings& set
 {
   check_enough_points(input.size(), settings.k_max);
   const Optimal_search search(input, settings);
-  std::vector<Optimal_sigmoid_neighborhood> results(input.size());
-  for_each_index<ConcurrencyTag>(
+  for_each_index_in_blocks<ConcurrencyTag, Optimal_sigmoid_neighborhood>(
     input.size(), [&search] { return search.make_scratch(); },
-    [&search, &results](std::size_t i, Optimal_search::Scratch& s) {
-      results[i] = search(static_cast<std::uint32_t>(i), s);
-    });
-  for(std::size_t i = 0; i < results.size(); ++i)
-    sink(i, results[i]);
+    [&search](std::size_t i, Optimal_search::Scratch& s) { return search(static_cast<std::uint32_t>(i), s); },
+    sink);
 }
 
 } // namespace internal

@@ -10,7 +10,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <algorithm>
 #include <type_traits>
+#include <vector>
 
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
@@ -51,6 +53,27 @@ void for_each_index(std::size_t n, const MakeScratch& make_scratch, const Body& 
   auto scratch = make_scratch();
   for(std::size_t i = 0; i < n; ++i)
     body(i, scratch);
+}
+
+// The same over blocks of indices: `compute(i, scratch)` returns the result of index i, and
+// `sink(i, result)` receives the results in index order, one block at a time, so that memory
+// holds one block of results rather than all of them.
+template <typename ConcurrencyTag, typename Result, typename MakeScratch, typename Compute, typename Sink>
+void for_each_index_in_blocks(std::size_t n, const MakeScratch& make_scratch, const Compute& compute,
+                              const Sink& sink)
+{
+  constexpr std::size_t BLOCK = 1 << 14;
+  std::vector<Result> results;
+  for(std::size_t start = 0; start < n; start += BLOCK)
+  {
+    const std::size_t count = (std::min)(BLOCK, n - start);
+    results.resize(count);
+    for_each_index<ConcurrencyTag>(count, make_scratch, [&](std::size_t i, auto& scratch) {
+      results[i] = compute(start + i, scratch);
+    });
+    for(std::size_t i = 0; i < count; ++i)
+      sink(start + i, results[i]);
+  }
 }
 
 } // namespace internal

@@ -1,0 +1,367 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Times, on the same points in one run:
+//  (a) CGAL's Classification::Local_eigen_analysis at k = 20 (plain PCA features),
+//  (b) the plain loop: every one of the 420 triples, one covariance and one eigen solve each,
+//  (c) the package's optimal search, (d) the package's features for one fixed (a, b, k),
+// and checks that (b) and (c) give the same (a*, b*, k*, E) on every point.
+//
+//   optimal_search_benchmark [--points N] [--threads T] [--data sphere|fandisk|scan|all]
+//                            [--fandisk FILE] [--scan FILE] [--skip-plain]
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Classification/Local_eigen_analysis.h>
+#include <CGAL/Classification/Point_set_neighborhood.h>
+#include <CGAL/Random.h>
+#include <CGAL/Real_timer.h>
+#include <CGAL/Sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/property_map.h>
+
+#include <boost/iterator/function_output_iterator.hpp>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <random>
+#include <string>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point_3;
+typedef Kernel::Vector_3 Vector_3;
+namespace SN = CGAL::Sigmoid_neighborhoods;
+namespace SNI = CGAL::Sigmoid_neighborhoods::internal;
+
+struct Data
+{
+  std::string name;
+  std::vector<Point_3> points;
+  std::vector<Vector_3> normals;
+};
+
+// Uniform random points on the unit sphere, normals pointing out.
+Data sampled_sphere(std::size_t n)
+{
+  Data d{"sphere", {}, {}};
+  std::mt19937_64 rng(1);
+  std::normal_distribution<double> g;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    Vector_3 v(g(rng), g(rng), g(rng));
+    v = v / std::sqrt(v.squared_length());
+    d.points.push_back(CGAL::ORIGIN + v);
+    d.normals.push_back(v);
+  }
+  return d;
+}
+
+// Random points on the fandisk's triangles, normals interpolated from the vertex normals.
+Data upsampled_fandisk(const std::string& file, std::size_t n)
+{
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
+  Mesh mesh;
+  if(!CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(file, mesh) || mesh.is_empty())
+    throw std::runtime_error("cannot read " + file);
+  auto vn = mesh.add_property_map<Mesh::Vertex_index, Vector_3>("v:n").first;
+  CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, vn);
+  std::vector<Mesh::Face_index> faces(mesh.faces().begin(), mesh.faces().end());
+  std::vector<double> area;
+  for(auto f : faces)
+  {
+    auto h = mesh.halfedge(f);
+    area.push_back(std::sqrt(CGAL::squared_area(mesh.point(mesh.source(h)), mesh.point(mesh.target(h)),
+                                                mesh.point(mesh.target(mesh.next(h))))));
+  }
+  std::mt19937_64 rng(2);
+  std::discrete_distribution<std::size_t> pick(area.begin(), area.end());
+  std::uniform_real_distribution<double> u(0., 1.);
+  Data d{"fandisk", {}, {}};
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    auto h = mesh.halfedge(faces[pick(rng)]);
+    Mesh::Vertex_index v[3] = {mesh.source(h), mesh.target(h), mesh.target(mesh.next(h))};
+    double s = u(rng), t = u(rng);
+    if(s + t > 1.)
+    {
+      s = 1. - s;
+      t = 1. - t;
+    }
+    const double w[3] = {1. - s - t, s, t};
+    Vector_3 p = CGAL::NULL_VECTOR, nn = CGAL::NULL_VECTOR;
+    for(int c = 0; c < 3; ++c)
+    {
+      p = p + w[c] * (mesh.point(v[c]) - CGAL::ORIGIN);
+      nn = nn + w[c] * vn[v[c]];
+    }
+    d.points.push_back(CGAL::ORIGIN + p);
+    d.normals.push_back(nn / std::sqrt(nn.squared_length()));
+  }
+  return d;
+}
+
+Data scan(const std::string& file)
+{
+  const SN::Oriented_point_set s = SN::read_oriented_point_set(file);
+  return Data{std::filesystem::path(file).filename().string(), s.points, s.normals};
+}
+
+// The plain loop of SPEC §5: every triple, one covariance and one eigen solve each.
+std::vector<SN::Optimal_sigmoid_neighborhood> plain_loop(const SNI::Oriented_points& input)
+{
+  SNI::Search_settings s = SNI::search_settings(CGAL::parameters::default_values());
+  const auto sigmoids = s.sigmoids();
+  const SNI::K_neighbor_query query(input.points);
+  std::vector<SN::Optimal_sigmoid_neighborhood> result(input.size());
+  struct Scratch
+  {
+    std::vector<SNI::Neighbor> neighbors;
+    SNI::Local_neighborhood local;
+    std::vector<double> w;
+  };
+  SNI::for_each_index<CGAL::Parallel_tag>(
+    input.size(), [] { return Scratch(); },
+    [&](std::size_t i, Scratch& sc) {
+      query.query(std::uint32_t(i), s.k_max, sc.neighbors);
+      sc.local.assign(input, std::uint32_t(i), sc.neighbors);
+      sc.w.resize(sc.local.size());
+      SN::Optimal_sigmoid_neighborhood& r = result[i];
+      for(const SN::Cosine_sigmoid& sigmoid : sigmoids)
+      {
+        sc.local.weights(sigmoid, sc.w.data());
+        for(unsigned k = s.k_min; k <= s.k_max; ++k)
+        {
+          const double e = sc.local.features(sc.w.data(), k, s.barycenter).error;
+          if(e < r.error() - SN::TIE_TOLERANCE)
+          {
+            r.a = sigmoid.a();
+            r.b = sigmoid.b();
+            r.k = k;
+            r.features.error = e;
+          }
+        }
+      }
+    });
+  return result;
+}
+
+std::size_t current_rss_bytes()
+{
+  long pages = 0, resident = 0;
+  if(FILE* f = std::fopen("/proc/self/statm", "r"))
+  {
+    if(std::fscanf(f, "%ld %ld", &pages, &resident) != 2)
+      resident = 0;
+    std::fclose(f);
+  }
+  return std::size_t(resident) * std::size_t(::sysconf(_SC_PAGESIZE));
+}
+
+// Runs `work` in a child process; returns its seconds and its peak memory above the start.
+struct Measure
+{
+  double seconds = 0.;
+  double extra_bytes = 0.;
+};
+
+Measure measure(const std::function<void()>& work)
+{
+  int pipe_fd[2];
+  if(::pipe(pipe_fd) != 0)
+    throw std::runtime_error("pipe");
+  const pid_t child = ::fork();
+  if(child == 0)
+  {
+    ::close(pipe_fd[0]);
+    const double before = double(current_rss_bytes());
+    CGAL::Real_timer t;
+    t.start();
+    work();
+    t.stop();
+    struct rusage usage;
+    ::getrusage(RUSAGE_SELF, &usage);
+    const double m[2] = {t.time(), double(usage.ru_maxrss) * 1024. - before};
+    if(::write(pipe_fd[1], m, sizeof(m)) != sizeof(m))
+      ::_exit(1);
+    ::_exit(0);
+  }
+  ::close(pipe_fd[1]);
+  double m[2] = {0., 0.};
+  if(::read(pipe_fd[0], m, sizeof(m)) != sizeof(m))
+    throw std::runtime_error("measurement failed");
+  ::close(pipe_fd[0]);
+  int status;
+  ::waitpid(child, &status, 0);
+  return Measure{m[0], m[1]};
+}
+
+void run(const Data& data, int threads, bool with_plain)
+{
+#ifdef _OPENMP
+  omp_set_num_threads(threads);
+#endif
+  const std::size_t n = data.points.size();
+  std::vector<std::uint32_t> indices(n);
+  for(std::size_t i = 0; i < n; ++i)
+    indices[i] = std::uint32_t(i);
+  const auto np = CGAL::parameters::point_map(CGAL::make_property_map(data.points))
+                    .normal_map(CGAL::make_property_map(data.normals));
+  const SNI::Oriented_points input =
+    SNI::copy_oriented_points(indices, CGAL::make_property_map(data.points), CGAL::make_property_map(data.normals));
+  const double input_bytes = double(n) * (sizeof(Point_3) + sizeof(Vector_3));
+
+  // (a) CGAL's PCA features at k = 20 (Sequential: CGAL's parallel code needs TBB).
+  const Measure a = measure([&] {
+    typedef CGAL::Classification::Point_set_neighborhood<Kernel, std::vector<Point_3>,
+                                                         CGAL::Identity_property_map<Point_3>> Neighborhood;
+    Neighborhood neighborhood(data.points, CGAL::Identity_property_map<Point_3>(), CGAL::Sequential_tag());
+    auto eigen = CGAL::Classification::Local_eigen_analysis::create_from_point_set(
+      data.points, CGAL::Identity_property_map<Point_3>(), neighborhood.k_neighbor_query(20), CGAL::Sequential_tag());
+    volatile float sink = eigen.eigenvalue(0)[0];
+    (void)sink;
+  });
+  // the k-NN share: one query of k_max = 20 neighbors per point
+  const Measure knn = measure([&] {
+    const SNI::K_neighbor_query query(input.points);
+    SNI::for_each_index<CGAL::Parallel_tag>(
+      n, [] { return std::vector<SNI::Neighbor>(); },
+      [&](std::size_t i, std::vector<SNI::Neighbor>& found) { query.query(std::uint32_t(i), 20, found); });
+  });
+  // (c) the optimal search; its records are compared with (b) below
+  std::vector<SN::Optimal_sigmoid_neighborhood> optimal;
+  // The records are consumed as they come: the memory measured is the library's own.
+  const Measure c = measure([&] {
+    double checksum = 0.;
+    SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(
+      indices, boost::make_function_output_iterator([&](const SN::Optimal_sigmoid_neighborhood& r) {
+        checksum += r.k;
+      }), np);
+    volatile double sink = checksum;
+    (void)sink;
+  });
+  SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(indices, std::back_inserter(optimal), np);
+  // (d) one fixed triple
+  const Measure d = measure([&] {
+    std::vector<SN::Dimensionality_features> features;
+    features.reserve(n);
+    SN::compute_sigmoid_features<CGAL::Parallel_tag>(indices, SN::Cosine_sigmoid(0., SNI::PI / 3), 20,
+                                                     std::back_inserter(features), np);
+  });
+  Measure b;
+  std::string identical = "not-checked";
+  if(with_plain)
+  {
+    b = measure([&] { plain_loop(input); });
+    const auto plain = plain_loop(input);
+    std::size_t differ = 0;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const auto &p = plain[i], &o = optimal[i];
+      const bool same = p.k == o.k && (p.k == 0 || (p.a == o.a && p.b == o.b)) &&
+                        std::memcmp(&p.features.error, &o.features.error, sizeof(double)) == 0;
+      differ += !same;
+    }
+    identical = differ == 0 ? "yes" : "no";
+    if(differ)
+      std::printf("  (b) and (c) differ on %zu points\n", differ);
+  }
+  auto rate = [n](const Measure& m) { return m.seconds > 0 ? double(n) / m.seconds : 0.; };
+  std::printf("%s, %zu points, %d threads\n", data.name.c_str(), n, threads);
+  std::printf("  (a) CGAL Local_eigen_analysis k=20: %10.0f points/s (%.2f s, sequential)\n", rate(a), a.seconds);
+  if(with_plain)
+    std::printf("  (b) plain loop, 420 triples:       %10.0f points/s (%.2f s)\n", rate(b), b.seconds);
+  std::printf("  (c) optimal search:                 %10.0f points/s (%.2f s), %.0f bytes/point above the input\n",
+              rate(c), c.seconds, c.extra_bytes / double(n));
+  std::printf("  (d) features, one (a, b, k):        %10.0f points/s (%.2f s)\n", rate(d), d.seconds);
+  std::printf("  k-NN share of (c): %.1f %% (%.2f s for one 20-NN query per point)\n",
+              100. * knn.seconds / c.seconds, knn.seconds);
+  std::printf("  input %.1f MB, (c) peak %.1f MB above it\n", input_bytes / 1e6, c.extra_bytes / 1e6);
+  std::printf("summary: data=%s points=%zu threads=%d optimal_over_cgal_pca=%.2f plain_over_optimal=%s identical=%s\n",
+              data.name.c_str(), n, threads, c.seconds / a.seconds,
+              with_plain ? std::to_string(b.seconds / c.seconds).c_str() : "nan", identical.c_str());
+  std::fflush(stdout);
+}
+
+int main(int argc, char** argv)
+{
+  std::vector<std::size_t> sizes = {100000, 1000000, 10000000};
+  std::vector<int> threads = {1};
+#ifdef _OPENMP
+  if(omp_get_max_threads() > 1)
+    threads.push_back(omp_get_max_threads());
+#endif
+  std::string which = "all", fandisk = SN_BENCHMARK_FANDISK, scan_file;
+  bool with_plain = true;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto next = [&]() -> std::string {
+      if(i + 1 >= argc)
+        throw std::runtime_error(arg + " needs a value");
+      return argv[++i];
+    };
+    if(arg == "--points")
+      sizes = {std::size_t(std::stod(next()))};
+    else if(arg == "--threads")
+      threads = {std::stoi(next())};
+    else if(arg == "--data")
+      which = next();
+    else if(arg == "--fandisk")
+      fandisk = next();
+    else if(arg == "--scan")
+      scan_file = next();
+    else if(arg == "--skip-plain")
+      with_plain = false;
+    else
+    {
+      std::cerr << "usage: " << argv[0]
+                << " [--points N] [--threads T] [--data sphere|fandisk|scan|all] [--fandisk FILE] [--scan FILE]"
+                   " [--skip-plain]\n";
+      return 2;
+    }
+  }
+  if(scan_file.empty() && std::filesystem::exists(SN_BENCHMARK_SHARED_DATA "/scanned"))
+  {
+    std::uintmax_t largest = 0;
+    for(const auto& e : std::filesystem::directory_iterator(SN_BENCHMARK_SHARED_DATA "/scanned"))
+      if(e.is_regular_file() && e.file_size() > largest)
+      {
+        largest = e.file_size();
+        scan_file = e.path().string();
+      }
+  }
+  for(std::size_t n : sizes)
+  {
+    std::vector<Data> data;
+    if(which == "sphere" || which == "all")
+      data.push_back(sampled_sphere(n));
+    if((which == "fandisk" || which == "all") && std::filesystem::exists(fandisk))
+      data.push_back(upsampled_fandisk(fandisk, n));
+    for(const Data& d : data)
+      for(int t : threads)
+        run(d, t, with_plain);
+  }
+  if((which == "scan" || which == "all") && !scan_file.empty())
+  {
+    const Data d = scan(scan_file);
+    for(int t : threads)
+      run(d, t, with_plain);
+  }
+  return 0;
+}
