@@ -1,0 +1,534 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_FILTER_NORMALS_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_FILTER_NORMALS_H
+
+#include <CGAL/Sigmoid_neighborhoods/parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Ball_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/K_neighbor_query.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Local_neighborhood.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Optimal_search.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/mesh_points.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <Eigen/Core>
+#include <Eigen/Eigenvalues>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+
+// The named parameters of `filter_normals()`, made as in parameters.h (which this header does not
+// change): our parameters first in a chain, CGAL's after.
+#define CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER(TAG, NAME)                           \
+  namespace internal_np {                                                                          \
+  enum TAG { NAME };                                                                               \
+  }                                                                                                \
+  namespace parameters {                                                                           \
+  template <typename T>                                                                            \
+  CGAL::Named_function_parameters<T, internal_np::TAG> NAME(const T& value)                        \
+  {                                                                                                \
+    return CGAL::Named_function_parameters<T, internal_np::TAG>(value);                            \
+  }                                                                                                \
+  template <typename T, typename NP_T, typename NP_Tag, typename NP_Base>                          \
+  CGAL::Named_function_parameters<T, internal_np::TAG,                                             \
+                                  CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >         \
+  NAME(const T& value, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np)           \
+  {                                                                                                \
+    return CGAL::Named_function_parameters<                                                        \
+      T, internal_np::TAG, CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >(value, np);    \
+  }                                                                                                \
+  }
+
+/// \cond SKIP_IN_MANUAL
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER(normal_cut_off_t, normal_cut_off)
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER(eigenvalue_threshold_t, eigenvalue_threshold)
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER(damping_factor_t, damping_factor)
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER(neighborhoods_t, neighborhoods)
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER(adaptive_neighborhood_size_t, adaptive_neighborhood_size)
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER(neighborhood_size_range_t, neighborhood_size_range)
+/// \endcond
+
+#undef CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER
+
+/// The default number of sweeps `p` of `filter_normals()` (the authors' code).
+constexpr unsigned int DEFAULT_FILTER_ITERATIONS = 50;
+/// The default dot-product cut-off `rho`: neighbor `j` votes for `i` when `n_i * n_j > rho`.
+constexpr double DEFAULT_NORMAL_CUT_OFF = 0.9;
+/// The default eigenvalue threshold `tau` of the binary eigenvalue optimisation.
+constexpr double DEFAULT_EIGENVALUE_THRESHOLD = 0.25;
+/// The default damping factor `d` of the update `n <- normalize(T n + d n)`.
+constexpr double DEFAULT_DAMPING_FACTOR = 3.;
+/// The default half width of the adaptive sizes `{k_i - 10, ..., k_i + 10}` (SPEC §7).
+constexpr unsigned int DEFAULT_NEIGHBORHOOD_SIZE_RANGE = 10;
+/// The scale `m` of the default ball radius `5 m` is the mean distance to this many neighbors.
+constexpr unsigned int FILTER_SCALE_NEIGHBORS = 12;
+/// The default ball radius is this factor times the scale `m`.
+constexpr double FILTER_RADIUS_FACTOR = 5.;
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  what `filter_normals()` did. Counts over sweeps count one per point and sweep.
+*/
+struct Normal_filter_summary
+{
+  std::size_t points = 0;        ///< points filtered
+  unsigned int iterations = 0;   ///< sweeps run
+  double radius = 0.;            ///< ball radius of the default neighborhoods (0 when they were given)
+  double mean_neighbors = 0.;    ///< mean size `k_i` of the default neighborhoods
+  std::size_t empty_cones = 0;   ///< point-sweeps in which no neighbor voted: the normal was kept
+  std::size_t fallbacks = 0;     ///< adaptive: point-sweeps with every size degenerate (default neighborhood, equal weights)
+  double mean_selected_size = 0.; ///< adaptive: mean selected `k` over the other point-sweeps
+  Mesh_points_summary mesh;      ///< for a mesh: how its vertices became points
+};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+struct Normal_filter_settings
+{
+  unsigned int iterations = DEFAULT_FILTER_ITERATIONS;
+  double cut_off = DEFAULT_NORMAL_CUT_OFF;
+  double eigenvalue_threshold = DEFAULT_EIGENVALUE_THRESHOLD;
+  double damping = DEFAULT_DAMPING_FACTOR;
+  double radius = 0.; // 0: FILTER_RADIUS_FACTOR times the mean distance to FILTER_SCALE_NEIGHBORS neighbors
+  bool adaptive = false;
+  unsigned int size_range = DEFAULT_NEIGHBORHOOD_SIZE_RANGE;
+  double angle_tolerance = DEFAULT_ANGLE_TOLERANCE;
+  Barycenter barycenter = Barycenter::WEIGHTED;
+};
+
+template <typename NamedParameters>
+Normal_filter_settings normal_filter_settings(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Normal_filter_settings s;
+  s.iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), DEFAULT_FILTER_ITERATIONS);
+  s.cut_off = choose_parameter(get_parameter(np, internal_np::normal_cut_off), DEFAULT_NORMAL_CUT_OFF);
+  s.eigenvalue_threshold =
+    choose_parameter(get_parameter(np, internal_np::eigenvalue_threshold), DEFAULT_EIGENVALUE_THRESHOLD);
+  s.damping = choose_parameter(get_parameter(np, internal_np::damping_factor), DEFAULT_DAMPING_FACTOR);
+  s.radius = choose_parameter(get_parameter(np, CGAL::internal_np::neighbor_radius), 0.);
+  s.adaptive = choose_parameter(get_parameter(np, internal_np::adaptive_neighborhood_size), false);
+  s.size_range =
+    choose_parameter(get_parameter(np, internal_np::neighborhood_size_range), DEFAULT_NEIGHBORHOOD_SIZE_RANGE);
+  s.angle_tolerance = choose_parameter(get_parameter(np, internal_np::angle_tolerance), DEFAULT_ANGLE_TOLERANCE);
+  s.barycenter = choose_parameter(get_parameter(np, internal_np::barycenter), Barycenter::WEIGHTED);
+  if(!(s.cut_off >= -1. && s.cut_off <= 1.))
+    throw std::invalid_argument("the normal cut-off must lie in [-1, 1], got " + std::to_string(s.cut_off));
+  if(!std::isfinite(s.eigenvalue_threshold))
+    throw std::invalid_argument("the eigenvalue threshold must be finite");
+  if(!(s.damping >= 0. && std::isfinite(s.damping)))
+    throw std::invalid_argument("the damping factor must be finite and >= 0, got " + std::to_string(s.damping));
+  if(!(s.radius >= 0. && std::isfinite(s.radius)))
+    throw std::invalid_argument("the neighbor radius must be finite and > 0, got " + std::to_string(s.radius));
+  if(!(s.angle_tolerance >= 0. && s.angle_tolerance < PI))
+    throw std::invalid_argument("angle tolerance must be in [0, pi), got " + std::to_string(s.angle_tolerance));
+  return s;
+}
+
+template <typename Index>
+bool index_in_range(Index j, std::size_t n)
+{
+  if constexpr(std::is_signed<Index>::value)
+    if(j < 0)
+      return false;
+  return std::size_t(j) < n;
+}
+
+// The caller's neighborhoods (a range of ranges of indices), checked.
+template <typename Lists>
+Neighbor_lists neighbor_lists(const Lists& lists, std::size_t n)
+{
+  Neighbor_lists result;
+  std::size_t i = 0;
+  for(const auto& list : lists)
+  {
+    if(i == n)
+      break;
+    for(const auto& j : list)
+    {
+      if(!index_in_range(j, n))
+        throw std::invalid_argument("neighborhood of point " + std::to_string(i) + ": index " + std::to_string(j) +
+                                    " is out of range (" + std::to_string(n) + " points)");
+      if(std::size_t(j) == i)
+        throw std::invalid_argument("neighborhood of point " + std::to_string(i) + " contains the point itself");
+      result.indices.push_back(static_cast<std::uint32_t>(j));
+    }
+    result.offsets.push_back(result.indices.size());
+    ++i;
+  }
+  if(result.size() != n || std::size_t(std::distance(std::begin(lists), std::end(lists))) != n)
+    throw std::invalid_argument("the neighborhoods must hold one list per point (" + std::to_string(n) + ")");
+  return result;
+}
+
+// One damped update n_i <- normalize(T~ n_i + d n_i) from the normal voting tensor of the neighbors
+// that vote (n_i * n_j > cut-off, or all of them with `equal_weights`), yadav-normal-filtering.md §3.
+// Returns false, with `result = n_i`, when no neighbor votes (or the update vanishes, d = 0).
+template <typename Iterator, typename IndexOf>
+bool voting_tensor_update(const std::vector<Eigen::Vector3d>& normals, std::size_t i, Iterator begin, Iterator end,
+                          IndexOf index_of, bool equal_weights, const Normal_filter_settings& s,
+                          Eigen::Vector3d& result)
+{
+  const Eigen::Vector3d& n = normals[i];
+  Eigen::Matrix3d tensor = Eigen::Matrix3d::Zero();
+  std::size_t count = 0;
+  for(Iterator it = begin; it != end; ++it)
+  {
+    const Eigen::Vector3d& m = normals[index_of(*it)];
+    if(equal_weights || n[0] * m[0] + n[1] * m[1] + n[2] * m[2] > s.cut_off)
+    {
+      tensor.noalias() += m * m.transpose();
+      ++count;
+    }
+  }
+  result = n;
+  if(count == 0)
+    return false;
+  tensor /= double(count);
+  // Eigenvalues ascending: index 2 is the largest, always kept; the others when >= tau.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(tensor, Eigen::ComputeEigenvectors);
+  const Eigen::Vector3d& lambda = solver.eigenvalues();
+  const Eigen::Matrix3d& e = solver.eigenvectors();
+  Eigen::Matrix3d binary = e.col(2) * e.col(2).transpose();
+  if(lambda[1] >= s.eigenvalue_threshold)
+    binary += e.col(1) * e.col(1).transpose();
+  if(lambda[0] >= s.eigenvalue_threshold)
+    binary += e.col(0) * e.col(0).transpose();
+  const Eigen::Vector3d v = binary * n + s.damping * n;
+  const double norm = v.norm();
+  if(!(norm > 0.))
+    return false;
+  result = v / norm;
+  return true;
+}
+
+// The sweeps of the filter on `input` (normals replaced), with the ball neighborhoods or `given`.
+template <typename ConcurrencyTag>
+Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_lists* given,
+                                         const Normal_filter_settings& s)
+{
+  const std::size_t n = input.size();
+  if(n == 0)
+    throw std::invalid_argument("filter_normals(): no points");
+  if(n > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
+    throw std::invalid_argument("filter_normals(): too many points");
+  Normal_filter_summary summary;
+  summary.points = n;
+  summary.iterations = s.iterations;
+
+  // The default neighborhoods Omega_i, built once (yadav-normal-filtering.md §2).
+  Neighbor_lists ball;
+  if(given == nullptr)
+  {
+    double radius = s.radius;
+    if(radius == 0.)
+    {
+      if(n < FILTER_SCALE_NEIGHBORS + 1)
+        throw std::invalid_argument("filter_normals(): the default radius needs at least " +
+                                    std::to_string(FILTER_SCALE_NEIGHBORS + 1) + " points, got " + std::to_string(n) +
+                                    " (or give neighbor_radius or neighborhoods)");
+      radius = FILTER_RADIUS_FACTOR * mean_neighbor_distance<ConcurrencyTag>(input.points, FILTER_SCALE_NEIGHBORS);
+    }
+    summary.radius = radius;
+    ball = ball_neighborhoods<ConcurrencyTag>(input.points, radius);
+  }
+  const Neighbor_lists& omega = given != nullptr ? *given : ball;
+  summary.mean_neighbors = double(omega.indices.size()) / double(n);
+
+  // Adaptive sizes (SPEC §7): one k-NN query of k_i + range neighbors per point, the sizes
+  // {k_i - range, ..., k_i + range} (positive, at most n - 1) evaluated on it in every sweep.
+  std::vector<std::size_t> knn_offsets(n + 1, 0);
+  std::vector<unsigned int> k_low(n, 0), k_high(n, 0);
+  if(s.adaptive)
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const std::size_t k_i = omega.count(i);
+      k_low[i] = k_i > s.size_range ? unsigned(k_i - s.size_range) : 1u;
+      k_high[i] = unsigned((std::min)(k_i + s.size_range, n - 1));
+      knn_offsets[i + 1] = knn_offsets[i] + k_high[i];
+    }
+  std::vector<Neighbor> knn(knn_offsets[n]);
+  // The cut-off weights of the last evaluation (point first), and the size chosen (0: fallback).
+  std::vector<unsigned char> cached_weights(s.adaptive ? knn_offsets[n] + n : 0);
+  std::vector<unsigned char> cached(n, 0);
+  std::vector<unsigned int> chosen(n, 0);
+  std::vector<std::uint64_t> selected_sizes(n, 0);
+  std::vector<std::uint32_t> empty_cones(n, 0), fallbacks(n, 0);
+  if(s.adaptive && knn_offsets[n] > 0)
+  {
+    const K_neighbor_query query(input.points);
+    for_each_index<ConcurrencyTag>(
+      n, [] { return std::vector<Neighbor>(); },
+      [&](std::size_t i, std::vector<Neighbor>& found) {
+        query.query(static_cast<std::uint32_t>(i), k_high[i], found);
+        std::copy(found.begin(), found.end(), knn.begin() + std::ptrdiff_t(knn_offsets[i]));
+      });
+  }
+  const double cut_off_angle = std::acos(s.cut_off);
+  const Cosine_sigmoid sigmoid(cut_off_angle, cut_off_angle, s.angle_tolerance);
+
+  struct Scratch
+  {
+    std::vector<Neighbor> neighbors;
+    Local_neighborhood local;
+    std::vector<double> weights;
+  };
+  std::vector<Eigen::Vector3d> next(n);
+  for(unsigned int iteration = 0; iteration < s.iterations; ++iteration)
+  {
+    const std::vector<Eigen::Vector3d>& normals = input.normals;
+    for_each_index<ConcurrencyTag>(
+      n, [] { return Scratch(); },
+      [&](std::size_t i, Scratch& scratch) {
+        bool voted = false;
+        auto own_index = [](std::uint32_t j) { return j; };
+        if(!s.adaptive)
+          voted = voting_tensor_update(normals, i, omega.begin(i), omega.end(i), own_index, false, s, next[i]);
+        else
+        {
+          // The size of least E_dim with the cut-off weights a = b = arccos(rho) of the current
+          // normals. Positions are fixed, so equal weights give the same choice as last time.
+          const Neighbor* found = knn.data() + knn_offsets[i];
+          const std::size_t count = knn_offsets[i + 1] - knn_offsets[i];
+          unsigned char* weights = cached_weights.data() + knn_offsets[i] + i;
+          const Eigen::Vector3d& ni = normals[i];
+          bool same = cached[i] != 0;
+          for(std::size_t j = 0; j < count; ++j)
+          {
+            const Eigen::Vector3d& nj = normals[found[j].index];
+            const unsigned char w =
+              sigmoid.weight_from_cosine(ni[0] * nj[0] + ni[1] * nj[1] + ni[2] * nj[2]) > 0. ? 1 : 0;
+            if(weights[j + 1] != w)
+              same = false;
+            weights[j + 1] = w;
+          }
+          if(!same)
+          {
+            weights[0] = 1;
+            scratch.neighbors.assign(found, found + count);
+            scratch.local.assign(input, static_cast<std::uint32_t>(i), scratch.neighbors);
+            scratch.weights.resize(scratch.local.size());
+            scratch.local.weights(sigmoid, scratch.weights.data());
+            double best = std::numeric_limits<double>::infinity();
+            unsigned int best_k = 0;
+            for(unsigned int k = k_low[i]; k <= k_high[i]; ++k)
+            {
+              const double error = scratch.local.features(scratch.weights.data(), k, s.barycenter).error;
+              if(error < best - TIE_TOLERANCE)
+              {
+                best = error;
+                best_k = k;
+              }
+            }
+            chosen[i] = best_k;
+            cached[i] = 1;
+          }
+          if(chosen[i] == 0)
+          {
+            // Every size degenerate: the default neighborhood with equal weights.
+            ++fallbacks[i];
+            voted = voting_tensor_update(normals, i, omega.begin(i), omega.end(i), own_index, true, s, next[i]);
+          }
+          else
+          {
+            selected_sizes[i] += chosen[i];
+            voted = voting_tensor_update(normals, i, found, found + chosen[i],
+                                         [](const Neighbor& x) { return x.index; }, false, s, next[i]);
+          }
+        }
+        if(!voted)
+          ++empty_cones[i];
+      });
+    std::swap(input.normals, next);
+  }
+
+  std::uint64_t selected_total = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    summary.empty_cones += empty_cones[i];
+    summary.fallbacks += fallbacks[i];
+    selected_total += selected_sizes[i];
+  }
+  const std::size_t selections = std::size_t(s.iterations) * n - summary.fallbacks;
+  if(s.adaptive && selections > 0)
+    summary.mean_selected_size = double(selected_total) / double(selections);
+  return summary;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  \brief filters the normals of a point set by the normal voting tensor of Yadav et al. (2018),
+  stage 1 of their denoising (`yadav-normal-filtering.md`), and writes them back to `normal_map`.
+
+  Each of the `p` sweeps computes every new normal from the old ones (Jacobi): the neighbors `j`
+  of `i` with `n_i * n_j > rho` vote with the mean tensor `T = mean(n_j n_j^T)`; its eigenvalues
+  below `tau` become 0, the largest and the others 1 (`T~`); then `n_i <- normalize(T~ n_i + d n_i)`.
+  A point whose cone holds no neighbor keeps its normal. Normals never flip.
+
+  The default neighborhood of `i` is the ball `{j != i : |p_j - p_i| <= 5 m}`, `m` the mean
+  distance of the points to their 12 nearest neighbors, built once from the input positions.
+
+  With `adaptive_neighborhood_size(true)` (SPEC §7), in every sweep, before its update, every point
+  takes its `k` nearest neighbors (ties by index) with the `k` of least `E_dim` (weights
+  `sig_{a,a}`, `a = arccos(rho)`, the core's covariance and features) among
+  `{k_i - r, ..., k_i + r}` (positive values, at most `n - 1`), `k_i` the size of its default
+  neighborhood, `r` = `neighborhood_size_range`; ties go to the smallest `k`. A point for which
+  every size is degenerate uses its default neighborhood with equal weights (every neighbor votes).
+
+  The result is the same, bit for bit, for any number of threads.
+
+  \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag` (OpenMP)
+  \tparam PointRange a model of `Range` whose value type is the key type of the maps
+
+  \param points the input points with oriented normals
+  \param np optional named parameters (ours first, CGAL's after):
+    - `point_map` (CGAL), `normal_map` (CGAL, required, a `ReadWritePropertyMap`): normals need
+      not be unit; they are written back unit;
+    - `number_of_iterations` (CGAL): `p`, default 50;
+    - `neighbor_radius` (CGAL): the ball radius, default `5 m`;
+    - `Sigmoid_neighborhoods::parameters::normal_cut_off`: `rho` in `[-1, 1]`, default 0.9;
+    - `eigenvalue_threshold`: `tau`, default 0.25;
+    - `damping_factor`: `d >= 0`, default 3;
+    - `neighborhoods`: the caller's neighborhoods instead of the balls, a range (one per point, in
+      the order of `points`) of ranges of indices into `points`, never the point itself
+      (`std::cref` avoids a copy);
+    - `adaptive_neighborhood_size`: `bool`, default `false`;
+    - `neighborhood_size_range`: `r`, default 10;
+    - `angle_tolerance`, `barycenter`: of the adaptive `E_dim` (SPEC §3, §4).
+
+  \pre no point has a zero or non-finite normal or a non-finite coordinate; at least 13 points
+  when the default radius is used; otherwise `std::invalid_argument`.
+  \return what was done
+*/
+template <typename ConcurrencyTag, typename PointRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Normal_filter_summary filter_normals(PointRange& points, const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
+  static_assert(NP_helper::has_normal_map(), "filter_normals() needs a normal map");
+  using CGAL::parameters::get_parameter_reference;
+  using CGAL::parameters::is_default_parameter;
+  const auto normal_map = NP_helper::get_normal_map(points, np);
+  auto input = internal::copy_oriented_points(points, NP_helper::get_const_point_map(points, np), normal_map);
+  const internal::Normal_filter_settings settings = internal::normal_filter_settings(np);
+  Normal_filter_summary summary;
+  if constexpr(!is_default_parameter<CGAL_NP_CLASS, internal_np::neighborhoods_t>::value)
+  {
+    const internal::Neighbor_lists given =
+      internal::neighbor_lists(get_parameter_reference(np, internal_np::neighborhoods), input.size());
+    summary = internal::filter_normals_all<ConcurrencyTag>(input, &given, settings);
+  }
+  else
+    summary = internal::filter_normals_all<ConcurrencyTag>(input, nullptr, settings);
+  typedef typename boost::property_traits<typename NP_helper::Normal_map>::value_type Vector;
+  std::size_t i = 0;
+  for(auto& item : points)
+  {
+    const Eigen::Vector3d& n = input.normals[i++];
+    put(normal_map, item, Vector(n[0], n[1], n[2]));
+  }
+  return summary;
+}
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  \brief the same filter on the vertices of a `Surface_mesh` (SPEC §1): input normals from
+  `vertex_normal_map` or else `Polygon_mesh_processing::compute_vertex_normals()`, vertices at one
+  position merged (the smallest index kept; its copies get its normal), vertices without a face or
+  with an undefined normal left out (they get the zero vector).
+
+  \tparam VertexNormalMap a `WritablePropertyMap` from vertex descriptors to `Vector_3`
+  \param filtered_normals receives the filtered normal of every vertex (it may be the input map)
+  \param np the parameters of the point range version but `point_map`/`normal_map`, and
+    `vertex_normal_map` (CGAL); `neighborhoods` holds one range per vertex index
+    (`std::size_t(v)`, removed vertices included) of neighboring vertex indices.
+*/
+template <typename ConcurrencyTag, typename Point, typename VertexNormalMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Normal_filter_summary filter_normals(const CGAL::Surface_mesh<Point>& mesh, VertexNormalMap filtered_normals,
+                                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::get_parameter_reference;
+  using CGAL::parameters::is_default_parameter;
+  auto mesh_points = internal::mesh_points(mesh, np);
+  const internal::Normal_filter_settings settings = internal::normal_filter_settings(np);
+  Normal_filter_summary summary;
+  if constexpr(!is_default_parameter<CGAL_NP_CLASS, internal_np::neighborhoods_t>::value)
+  {
+    // Vertex lists to point lists: a point's list is its kept vertex's, without dropped vertices
+    // and without the copies of the point itself.
+    const auto& lists = get_parameter_reference(np, internal_np::neighborhoods);
+    const std::size_t vertex_slots = mesh_points.point_of_vertex.size();
+    if(std::size_t(std::distance(std::begin(lists), std::end(lists))) != vertex_slots)
+      throw std::invalid_argument("the neighborhoods must hold one list per vertex index (" +
+                                  std::to_string(vertex_slots) + ")");
+    std::vector<std::vector<std::uint32_t>> point_lists(mesh_points.input.size());
+    std::vector<bool> done(mesh_points.input.size(), false);
+    std::size_t v = 0;
+    for(const auto& list : lists)
+    {
+      const std::uint32_t i = mesh_points.point_of_vertex[v];
+      if(i != internal::NO_POINT && !done[i])
+      {
+        done[i] = true;
+        for(const auto& u : list)
+        {
+          if(!internal::index_in_range(u, vertex_slots))
+            throw std::invalid_argument("neighborhood of vertex " + std::to_string(v) + ": vertex " +
+                                        std::to_string(u) + " is out of range");
+          if(std::size_t(u) == v)
+            throw std::invalid_argument("neighborhood of vertex " + std::to_string(v) + " contains the vertex itself");
+          const std::uint32_t j = mesh_points.point_of_vertex[std::size_t(u)];
+          if(j != internal::NO_POINT && j != i)
+            point_lists[i].push_back(j);
+        }
+      }
+      ++v;
+    }
+    const internal::Neighbor_lists given = internal::neighbor_lists(point_lists, mesh_points.input.size());
+    summary = internal::filter_normals_all<ConcurrencyTag>(mesh_points.input, &given, settings);
+  }
+  else
+    summary = internal::filter_normals_all<ConcurrencyTag>(mesh_points.input, nullptr, settings);
+  summary.mesh = mesh_points.summary;
+  typedef typename boost::property_traits<VertexNormalMap>::value_type Vector;
+  for(auto vertex : mesh.vertices())
+  {
+    const std::uint32_t i = mesh_points.point_of_vertex[std::size_t(vertex)];
+    if(i == internal::NO_POINT)
+      put(filtered_normals, vertex, Vector(0., 0., 0.));
+    else
+    {
+      const Eigen::Vector3d& n = mesh_points.input.normals[i];
+      put(filtered_normals, vertex, Vector(n[0], n[1], n[2]));
+    }
+  }
+  return summary;
+}
+
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_FILTER_NORMALS_H

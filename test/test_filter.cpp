@@ -1,0 +1,512 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The normal voting tensor filter, its adaptive variant, the denoising utilities and the generated
+// cube and octahedron, on analytic cases.
+
+#include <CGAL/Sigmoid_neighborhoods/filter_normals.h>
+#include <CGAL/Sigmoid_neighborhoods/denoising_utilities.h>
+#include <CGAL/Sigmoid_neighborhoods/subdivided_polyhedra.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/compute_average_spacing.h>
+#include <CGAL/property_map.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <functional>
+#include <random>
+#include <string>
+#include <utility>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace {
+
+namespace SN = CGAL::Sigmoid_neighborhoods;
+namespace SNP = CGAL::Sigmoid_neighborhoods::parameters;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef K::Vector_3 Vector;
+typedef std::pair<Point, Vector> Point_with_normal;
+typedef std::vector<Point_with_normal> Points;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef CGAL::First_of_pair_property_map<Point_with_normal> Point_map;
+typedef CGAL::Second_of_pair_property_map<Point_with_normal> Normal_map;
+
+const double pi = SN::internal::PI;
+
+double angle(const Vector& n, const Vector& m)
+{
+  return SN::normal_angle(n, m);
+}
+
+// `n` tilted by an angle up to `max_tilt` about a random axis orthogonal to it.
+Vector tilted(const Vector& n, double max_tilt, std::mt19937_64& engine)
+{
+  std::uniform_real_distribution<double> u(0., 1.);
+  const Vector a = std::abs(n.x()) < 0.9 ? Vector(1, 0, 0) : Vector(0, 1, 0);
+  Vector t1 = CGAL::cross_product(n, a);
+  t1 = t1 / std::sqrt(t1.squared_length());
+  const Vector t2 = CGAL::cross_product(n, t1);
+  const double phi = 2 * pi * u(engine), theta = max_tilt * u(engine);
+  return std::cos(theta) * n + std::sin(theta) * (std::cos(phi) * t1 + std::sin(phi) * t2);
+}
+
+// A grid of the plane z = 0 with step 1 and normals tilted by up to `max_tilt`.
+Points noisy_plane(int size, double max_tilt, std::uint64_t seed)
+{
+  std::mt19937_64 engine(seed);
+  Points points;
+  for(int i = 0; i < size; ++i)
+    for(int j = 0; j < size; ++j)
+      points.emplace_back(Point(i, j, 0), tilted(Vector(0, 0, 1), max_tilt, engine));
+  return points;
+}
+
+// A convex cube edge: the faces z = 0 (x <= 0, normal +z) and x = 0 (z < 0, normal +x).
+Points noisy_edge(double max_tilt, std::uint64_t seed, std::vector<Vector>& truth)
+{
+  std::mt19937_64 engine(seed);
+  Points points;
+  truth.clear();
+  for(int y = 0; y <= 12; ++y)
+  {
+    for(int x = -12; x <= 0; ++x)
+    {
+      truth.emplace_back(0, 0, 1);
+      points.emplace_back(Point(x, y, 0), tilted(truth.back(), max_tilt, engine));
+    }
+    for(int z = -12; z <= -1; ++z)
+    {
+      truth.emplace_back(1, 0, 0);
+      points.emplace_back(Point(0, y, z), tilted(truth.back(), max_tilt, engine));
+    }
+  }
+  return points;
+}
+
+std::vector<Vector> normals_of(const Points& points)
+{
+  std::vector<Vector> result;
+  for(const auto& p : points)
+    result.push_back(p.second);
+  return result;
+}
+
+auto maps() { return CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()); }
+
+// The ball neighborhoods computed by brute force, ordered by distance then index.
+std::vector<std::vector<std::size_t>> brute_force_balls(const Points& points, double radius)
+{
+  std::vector<std::vector<std::size_t>> lists(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    std::vector<std::pair<double, std::size_t>> found;
+    for(std::size_t j = 0; j < points.size(); ++j)
+    {
+      const double dx = points[j].first.x() - points[i].first.x(), dy = points[j].first.y() - points[i].first.y(),
+                   dz = points[j].first.z() - points[i].first.z();
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      if(j != i && d2 <= radius * radius)
+        found.emplace_back(d2, j);
+    }
+    std::sort(found.begin(), found.end());
+    for(const auto& f : found)
+      lists[i].push_back(f.second);
+  }
+  return lists;
+}
+
+void set_threads(int n)
+{
+#ifdef _OPENMP
+  omp_set_num_threads(n);
+#else
+  (void)n;
+#endif
+}
+
+} // namespace
+
+TEST_CASE("filter: a plane with noisy normals converges to the plane normal", "[filter]")
+{
+  Points points = noisy_plane(20, 0.25, 1);
+  const double before = SN::normal_mse(std::vector<Vector>(points.size(), Vector(0, 0, 1)), normals_of(points));
+  const SN::Normal_filter_summary summary = SN::filter_normals<CGAL::Sequential_tag>(points, maps());
+  double worst = 0.;
+  for(const auto& p : points)
+  {
+    worst = (std::max)(worst, angle(p.second, Vector(0, 0, 1)));
+    CHECK(p.second.squared_length() == Approx(1.).epsilon(1e-14));
+  }
+  CHECK(worst < 0.01); // the noise was up to 0.25 rad; what is left is the sample's mean tilt
+  CHECK(SN::normal_mse(std::vector<Vector>(points.size(), Vector(0, 0, 1)), normals_of(points)) < before / 100.);
+  CHECK(summary.iterations == SN::DEFAULT_FILTER_ITERATIONS);
+  CHECK(summary.points == 400);
+  // m = mean 12-NN distance of a unit grid: the radius 5 m holds far more than 12 neighbors.
+  CHECK(summary.radius > 5.);
+  CHECK(summary.mean_neighbors > 40.);
+  CHECK(summary.empty_cones == 0);
+}
+
+TEST_CASE("filter: a cube edge keeps two normal clusters", "[filter]")
+{
+  std::vector<Vector> truth;
+  Points points = noisy_edge(0.15, 2, truth);
+  Points blurred = points;
+  SN::filter_normals<CGAL::Sequential_tag>(points, maps());
+  double worst = 0.;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    worst = (std::max)(worst, angle(points[i].second, truth[i]));
+  CHECK(worst < 0.02);
+  // Without the cut-off (every neighbor votes) normals next to the edge are pulled off their face
+  // (less than one might think: the binary eigenvalue optimisation keeps both directions where the
+  // two faces are about equally represented).
+  SN::filter_normals<CGAL::Sequential_tag>(blurred, SNP::normal_cut_off(-1., maps()));
+  double worst_blurred = 0.;
+  for(std::size_t i = 0; i < blurred.size(); ++i)
+    worst_blurred = (std::max)(worst_blurred, angle(blurred[i].second, truth[i]));
+  CHECK(worst_blurred > 0.1);
+  CHECK(worst_blurred > 5 * worst);
+}
+
+TEST_CASE("filter: an empty cone keeps the normal", "[filter]")
+{
+  Points points = {{Point(0, 0, 0), Vector(1, 0, 0)}, {Point(1, 0, 0), Vector(0, 1, 0)},
+                   {Point(0, 1, 0), Vector(0, 0, 1)}};
+  const Points before = points;
+  const std::vector<std::vector<int>> all = {{1, 2}, {0, 2}, {0, 1}};
+  const auto summary = SN::filter_normals<CGAL::Sequential_tag>(
+    points, SNP::neighborhoods(all, CGAL::parameters::number_of_iterations(7).point_map(Point_map()).normal_map(Normal_map())));
+  for(std::size_t i = 0; i < points.size(); ++i)
+    CHECK(points[i].second == before[i].second);
+  CHECK(summary.empty_cones == 21);
+}
+
+TEST_CASE("filter: the damped update contracts tan(phi) by d / (d + 1) for a fixed tensor", "[filter]")
+{
+  for(double damping : {3., 1.})
+    for(double phi : {0.1, 0.7, 1.2})
+    {
+      // Point 0 tilted by phi; its neighbors all have the normal e = +z, so T = e e^T.
+      Points points = {{Point(0, 0, 0), Vector(std::sin(phi), 0, std::cos(phi))}};
+      for(int j = 1; j <= 5; ++j)
+        points.emplace_back(Point(j, 0, 0), Vector(0, 0, 1));
+      const std::vector<std::vector<int>> lists = {{1, 2, 3, 4, 5}, {}, {}, {}, {}, {}};
+      SN::filter_normals<CGAL::Sequential_tag>(
+        points, SNP::neighborhoods(lists, SNP::normal_cut_off(0., SNP::damping_factor(damping,
+                    CGAL::parameters::number_of_iterations(1).point_map(Point_map()).normal_map(Normal_map())))));
+      const Vector& n = points[0].second;
+      CHECK(n.y() == 0.);
+      CHECK(n.x() / n.z() == Approx(damping / (damping + 1.) * std::tan(phi)).epsilon(1e-13));
+      CHECK(n.squared_length() == Approx(1.).epsilon(1e-15));
+    }
+}
+
+TEST_CASE("filter: the eigenvalue threshold keeps a second direction", "[filter]")
+{
+  // Half the neighbors along +z, half along x: eigenvalues (0, 1/2, 1/2). With tau <= 1/2 the
+  // tensor becomes the projection onto the xz plane and a normal in that plane stays put.
+  Points points = {{Point(0, 0, 0), Vector(std::sqrt(0.5), 0, std::sqrt(0.5))}};
+  for(int j = 1; j <= 4; ++j)
+    points.emplace_back(Point(j, 0, 0), j % 2 ? Vector(0, 0, 1) : Vector(1, 0, 0));
+  const std::vector<std::vector<int>> lists = {{1, 2, 3, 4}, {}, {}, {}, {}};
+  Points kept = points;
+  SN::filter_normals<CGAL::Sequential_tag>(
+    kept, SNP::neighborhoods(lists, SNP::normal_cut_off(0.5, SNP::eigenvalue_threshold(0.4,
+            CGAL::parameters::number_of_iterations(1).point_map(Point_map()).normal_map(Normal_map())))));
+  CHECK(kept[0].second.x() == Approx(std::sqrt(0.5)).epsilon(1e-12));
+  CHECK(kept[0].second.z() == Approx(std::sqrt(0.5)).epsilon(1e-12));
+}
+
+TEST_CASE("filter: the caller's neighborhoods give the internal result when they are the same", "[filter]")
+{
+  Points points = noisy_plane(12, 0.3, 3);
+  for(auto& p : points) // a little relief, so that distances differ
+    p.first = Point(p.first.x(), p.first.y(), 0.05 * std::sin(p.first.x() + 2 * p.first.y()));
+  for(bool adaptive : {false, true})
+  {
+    Points internal = points, given = points;
+    const auto summary = SN::filter_normals<CGAL::Sequential_tag>(
+      internal, SNP::adaptive_neighborhood_size(adaptive, CGAL::parameters::number_of_iterations(10)
+                                                            .point_map(Point_map()).normal_map(Normal_map())));
+    const auto lists = brute_force_balls(points, summary.radius);
+    SN::filter_normals<CGAL::Sequential_tag>(
+      given, SNP::neighborhoods(std::cref(lists), SNP::adaptive_neighborhood_size(adaptive,
+               CGAL::parameters::number_of_iterations(10).point_map(Point_map()).normal_map(Normal_map()))));
+    std::size_t equal = 0;
+    for(std::size_t i = 0; i < points.size(); ++i)
+      equal += (internal[i].second == given[i].second);
+    CHECK(equal == points.size());
+  }
+}
+
+TEST_CASE("filter: a given neighbor radius", "[filter]")
+{
+  Points points = noisy_plane(10, 0.2, 4);
+  Points given = points;
+  const auto summary = SN::filter_normals<CGAL::Sequential_tag>(points, maps());
+  const auto summary2 = SN::filter_normals<CGAL::Sequential_tag>(
+    given, CGAL::parameters::neighbor_radius(summary.radius).point_map(Point_map()).normal_map(Normal_map()));
+  CHECK(summary2.radius == summary.radius);
+  for(std::size_t i = 0; i < points.size(); ++i)
+    CHECK(points[i].second == given[i].second);
+  const auto small = SN::filter_normals<CGAL::Sequential_tag>(
+    given, CGAL::parameters::neighbor_radius(1.).point_map(Point_map()).normal_map(Normal_map()));
+  CHECK(small.mean_neighbors == Approx(4. * 10 * 9 / 100.)); // grid neighbors at distance 1
+}
+
+TEST_CASE("filter: adaptive sizes with range 0 are the default filter", "[filter][adaptive]")
+{
+  // With r = 0 each point takes k_i, its k_i nearest neighbors are its ball in the same order,
+  // and no point is degenerate on a noisy plane.
+  Points points = noisy_plane(12, 0.2, 5);
+  Points adaptive = points;
+  SN::filter_normals<CGAL::Sequential_tag>(points, CGAL::parameters::number_of_iterations(5)
+                                                     .point_map(Point_map()).normal_map(Normal_map()));
+  const auto summary = SN::filter_normals<CGAL::Sequential_tag>(
+    adaptive, SNP::adaptive_neighborhood_size(true, SNP::neighborhood_size_range(0u,
+                CGAL::parameters::number_of_iterations(5).point_map(Point_map()).normal_map(Normal_map()))));
+  for(std::size_t i = 0; i < points.size(); ++i)
+    CHECK(points[i].second == adaptive[i].second);
+  CHECK(summary.fallbacks == 0);
+  CHECK(summary.mean_selected_size == Approx(summary.mean_neighbors));
+}
+
+TEST_CASE("filter: adaptive sizes choose the least E_dim and stay inside the range", "[filter][adaptive]")
+{
+  std::vector<Vector> truth;
+  Points points = noisy_edge(0.1, 6, truth);
+  Points adaptive = points;
+  const auto summary = SN::filter_normals<CGAL::Sequential_tag>(
+    adaptive, SNP::adaptive_neighborhood_size(true, CGAL::parameters::number_of_iterations(20)
+                                                      .point_map(Point_map()).normal_map(Normal_map())));
+  CHECK(summary.fallbacks == 0);
+  CHECK(summary.mean_selected_size >= summary.mean_neighbors - 10.);
+  CHECK(summary.mean_selected_size <= summary.mean_neighbors + 10.);
+  double worst = 0.;
+  for(std::size_t i = 0; i < adaptive.size(); ++i)
+    worst = (std::max)(worst, angle(adaptive[i].second, truth[i]));
+  CHECK(worst < 0.05);
+}
+
+TEST_CASE("filter: a degenerate point falls back to its default neighborhood with equal weights", "[filter][adaptive]")
+{
+  // Point 0 has normal +z, all its neighbors m at 60 degrees: no neighbor passes the cut-off 0.9
+  // at any k, so it votes with all of them: n <- normalize((m.n) m + 3 n). The default filter
+  // keeps it (empty cone).
+  const Vector m(std::sin(pi / 3), 0, std::cos(pi / 3));
+  Points points = {{Point(0, 0, 0), Vector(0, 0, 1)}};
+  for(int i = -3; i <= 3; ++i)
+    for(int j = -3; j <= 3; ++j)
+      if(i != 0 || j != 0)
+        points.emplace_back(Point(i, j, 0), m);
+  Points fixed = points;
+  const auto summary = SN::filter_normals<CGAL::Sequential_tag>(
+    points, SNP::adaptive_neighborhood_size(true, CGAL::parameters::number_of_iterations(1)
+                                                    .neighbor_radius(2.).point_map(Point_map()).normal_map(Normal_map())));
+  CHECK(summary.fallbacks == 1);
+  const Vector expected = (m * Vector(0, 0, 1)) * m + 3 * Vector(0, 0, 1);
+  const Vector e = expected / std::sqrt(expected.squared_length());
+  CHECK(points[0].second.x() == Approx(e.x()).epsilon(1e-12));
+  CHECK(points[0].second.z() == Approx(e.z()).epsilon(1e-12));
+  const auto summary_fixed = SN::filter_normals<CGAL::Sequential_tag>(
+    fixed, CGAL::parameters::number_of_iterations(1).neighbor_radius(2.).point_map(Point_map()).normal_map(Normal_map()));
+  CHECK(fixed[0].second == Vector(0, 0, 1));
+  CHECK(summary_fixed.empty_cones == 1);
+}
+
+TEST_CASE("filter: bit-identical on 1 and 2 threads and sequentially", "[filter][parallel]")
+{
+  std::vector<Vector> truth;
+  const Points points = noisy_edge(0.2, 7, truth);
+  for(bool adaptive : {false, true})
+  {
+    auto run = [&](int threads, bool parallel) {
+      set_threads(threads);
+      Points copy = points;
+      const auto np = SNP::adaptive_neighborhood_size(adaptive, CGAL::parameters::number_of_iterations(8)
+                                                                  .point_map(Point_map()).normal_map(Normal_map()));
+      if(parallel)
+        SN::filter_normals<SN::Parallel_if_available_tag>(copy, np);
+      else
+        SN::filter_normals<CGAL::Sequential_tag>(copy, np);
+      return normals_of(copy);
+    };
+    const auto one = run(1, true), two = run(2, true), sequential = run(1, false);
+    CHECK(one == two);
+    CHECK(one == sequential);
+  }
+  set_threads(2);
+}
+
+TEST_CASE("filter: the mesh overload equals the point range on the mesh's vertices", "[filter][mesh]")
+{
+  Mesh mesh;
+  SN::make_subdivided_cube(4, mesh);
+  auto normals = mesh.add_property_map<Mesh::Vertex_index, Vector>("v:normal", CGAL::NULL_VECTOR).first;
+  CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, normals);
+  Points points;
+  for(auto v : mesh.vertices())
+    points.emplace_back(mesh.point(v), normals[v]);
+  auto filtered = mesh.add_property_map<Mesh::Vertex_index, Vector>("v:filtered", CGAL::NULL_VECTOR).first;
+  const auto summary = SN::filter_normals<CGAL::Sequential_tag>(mesh, filtered, SNP::normal_cut_off(0.95));
+  SN::filter_normals<CGAL::Sequential_tag>(points, SNP::normal_cut_off(0.95, maps()));
+  CHECK(summary.mesh.points == mesh.number_of_vertices());
+  std::size_t i = 0, equal = 0;
+  for(auto v : mesh.vertices())
+    equal += (filtered[v] == points[i++].second);
+  CHECK(equal == mesh.number_of_vertices());
+  // The vertex neighborhoods path: the mesh's 1-rings.
+  std::vector<std::vector<std::size_t>> rings(mesh.number_of_vertices());
+  for(auto v : mesh.vertices())
+    for(auto u : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
+      rings[std::size_t(v)].push_back(std::size_t(u));
+  auto ring_filtered = mesh.add_property_map<Mesh::Vertex_index, Vector>("v:ring", CGAL::NULL_VECTOR).first;
+  const auto ring_summary = SN::filter_normals<CGAL::Sequential_tag>(
+    mesh, ring_filtered, SNP::neighborhoods(rings, CGAL::parameters::vertex_normal_map(normals)));
+  CHECK(ring_summary.radius == 0.);
+  CHECK(ring_summary.mean_neighbors < 7.);
+}
+
+TEST_CASE("filter: bad inputs", "[filter][errors]")
+{
+  Points none;
+  CHECK_THROWS_WITH(SN::filter_normals<CGAL::Sequential_tag>(none, maps()), Catch::Contains("no points"));
+  Points few = noisy_plane(3, 0.1, 8); // 9 points: the 12-NN scale needs 13
+  CHECK_THROWS_WITH(SN::filter_normals<CGAL::Sequential_tag>(few, maps()), Catch::Contains("at least 13 points"));
+  CHECK_NOTHROW(SN::filter_normals<CGAL::Sequential_tag>(
+    few, CGAL::parameters::neighbor_radius(1.5).point_map(Point_map()).normal_map(Normal_map())));
+  Points zero = noisy_plane(5, 0.1, 9);
+  zero[7].second = CGAL::NULL_VECTOR;
+  CHECK_THROWS_WITH(SN::filter_normals<CGAL::Sequential_tag>(zero, maps()), Catch::Contains("point 7 has a zero normal"));
+  Points nan = noisy_plane(5, 0.1, 9);
+  nan[3].first = Point(std::nan(""), 0, 0);
+  CHECK_THROWS_WITH(SN::filter_normals<CGAL::Sequential_tag>(nan, maps()), Catch::Contains("point 3 has a non-finite"));
+  Points ok = noisy_plane(5, 0.1, 9);
+  CHECK_THROWS_WITH(SN::filter_normals<CGAL::Sequential_tag>(ok, SNP::normal_cut_off(1.5, maps())),
+                    Catch::Contains("cut-off must lie in [-1, 1]"));
+  CHECK_THROWS_WITH(SN::filter_normals<CGAL::Sequential_tag>(ok, SNP::damping_factor(-1., maps())),
+                    Catch::Contains("damping factor"));
+  const std::vector<std::vector<int>> self = {{0}};
+  Points one = {{Point(0, 0, 0), Vector(0, 0, 1)}};
+  CHECK_THROWS_WITH(SN::filter_normals<CGAL::Sequential_tag>(one, SNP::neighborhoods(self, maps())),
+                    Catch::Contains("contains the point itself"));
+  const std::vector<std::vector<int>> out_of_range = {{1}};
+  CHECK_THROWS_WITH(SN::filter_normals<CGAL::Sequential_tag>(one, SNP::neighborhoods(out_of_range, maps())),
+                    Catch::Contains("out of range"));
+  const std::vector<std::vector<int>> two_lists = {{}, {}};
+  CHECK_THROWS_WITH(SN::filter_normals<CGAL::Sequential_tag>(one, SNP::neighborhoods(two_lists, maps())),
+                    Catch::Contains("one list per point"));
+}
+
+TEST_CASE("utilities: the mean neighbor distance of a regular grid is its step", "[utilities]")
+{
+  // On a cubic grid every point has at least 3 neighbors at the step, on a square grid 2.
+  std::vector<Point> cubic, square;
+  for(int i = 0; i < 6; ++i)
+    for(int j = 0; j < 6; ++j)
+    {
+      square.emplace_back(0.25 * i, 0.25 * j, 1.);
+      for(int k = 0; k < 6; ++k)
+        cubic.emplace_back(0.5 * i, 0.5 * j, 0.5 * k);
+    }
+  CHECK(SN::compute_mean_neighbor_distance<CGAL::Sequential_tag>(cubic, 3) == Approx(0.5).epsilon(1e-15));
+  CHECK(SN::compute_mean_neighbor_distance<CGAL::Sequential_tag>(square, 2) == Approx(0.25).epsilon(1e-15));
+  // 4 neighbors at the step and 2 at sqrt(2) steps for the interior of a square grid.
+  CHECK(SN::compute_mean_neighbor_distance<CGAL::Sequential_tag>(square, 6) > 0.25);
+  // CGAL's average spacing counts the point itself: k / (k + 1) of ours on distinct points.
+  std::mt19937_64 engine(10);
+  std::uniform_real_distribution<double> u(0., 1.);
+  std::vector<Point> random;
+  for(int i = 0; i < 500; ++i)
+    random.emplace_back(u(engine), u(engine), u(engine));
+  const double ours = SN::compute_mean_neighbor_distance<SN::Parallel_if_available_tag>(random, 6);
+  CHECK(ours == Approx(7. / 6. * CGAL::compute_average_spacing<CGAL::Sequential_tag>(random, 6)).epsilon(1e-12));
+  CHECK_THROWS_WITH(SN::compute_mean_neighbor_distance<CGAL::Sequential_tag>(square, 36),
+                    Catch::Contains("needs at least 37 points"));
+}
+
+TEST_CASE("utilities: noise along the normals is reproducible and has the requested sd", "[utilities]")
+{
+  Points base;
+  for(int i = 0; i < 20000; ++i)
+  {
+    const double t = 0.001 * i;
+    base.emplace_back(Point(std::cos(t), std::sin(t), t), Vector(std::cos(t), std::sin(t), 0.5) * 2.);
+  }
+  Points a = base, b = base, c = base;
+  SN::add_normal_noise(a, 0.3, 42, maps());
+  SN::add_normal_noise(b, 0.3, 42, maps());
+  SN::add_normal_noise(c, 0.3, 43, maps());
+  double sum = 0., sum2 = 0., tangential = 0.;
+  std::size_t same = 0, same_c = 0;
+  for(std::size_t i = 0; i < base.size(); ++i)
+  {
+    same += (a[i].first == b[i].first);
+    same_c += (a[i].first == c[i].first);
+    const Vector d = a[i].first - base[i].first;
+    const Vector n = base[i].second / std::sqrt(base[i].second.squared_length());
+    const double e = d * n;
+    sum += e;
+    sum2 += e * e;
+    tangential = (std::max)(tangential, std::sqrt((d - e * n).squared_length()));
+  }
+  const double count = double(base.size());
+  const double mean = sum / count, sd = std::sqrt(sum2 / count - mean * mean);
+  CHECK(same == base.size());
+  CHECK(same_c == 0);
+  CHECK(std::abs(mean) < 0.01);
+  CHECK(sd == Approx(0.3).epsilon(0.02));
+  CHECK(tangential < 1e-12);
+  Points zero = base;
+  SN::add_normal_noise(zero, 0., 1, maps());
+  CHECK(zero == base);
+  zero[5].second = CGAL::NULL_VECTOR;
+  CHECK_THROWS_WITH(SN::add_normal_noise(zero, 0.1, 1, maps()), Catch::Contains("point 5 has a zero"));
+  CHECK_THROWS_WITH(SN::add_normal_noise(a, -1., 1, maps()), Catch::Contains("standard deviation"));
+}
+
+TEST_CASE("utilities: normal MSE", "[utilities]")
+{
+  const std::vector<Vector> n = {Vector(0, 0, 1), Vector(1, 0, 0), Vector(0, 1, 0)};
+  const std::vector<Vector> opposite = {Vector(0, 0, -1), Vector(-1, 0, 0), Vector(0, -1, 0)};
+  const std::vector<Vector> one_orthogonal = {Vector(0, 0, 1), Vector(1, 0, 0), Vector(1, 0, 0)};
+  CHECK(SN::normal_mse(n, n) == 0.);
+  CHECK(SN::normal_mse(n, opposite) == 4.);
+  CHECK(SN::normal_mse(n, one_orthogonal) == Approx(2. / 3.));
+  CHECK_THROWS_WITH(SN::normal_mse(n, std::vector<Vector>(2, Vector(0, 0, 1))), Catch::Contains("different sizes"));
+  CHECK_THROWS_WITH(SN::normal_mse(std::vector<Vector>(), std::vector<Vector>()), Catch::Contains("no normals"));
+}
+
+TEST_CASE("subdivided cube and octahedron: counts, closed, outward", "[shapes]")
+{
+  for(unsigned int m : {1u, 3u, 18u})
+  {
+    Mesh cube;
+    SN::make_subdivided_cube(m, cube);
+    CHECK(cube.number_of_vertices() == 6 * m * m + 2);
+    CHECK(cube.number_of_faces() == 12 * m * m);
+    CHECK(CGAL::is_closed(cube));
+    CHECK(CGAL::Polygon_mesh_processing::is_outward_oriented(cube));
+  }
+  for(unsigned int m : {1u, 5u, 64u})
+  {
+    Mesh octahedron;
+    SN::make_subdivided_octahedron(m, octahedron);
+    CHECK(octahedron.number_of_vertices() == 4 * m * m + 2);
+    CHECK(octahedron.number_of_faces() == 8 * m * m);
+    CHECK(CGAL::is_closed(octahedron));
+    CHECK(CGAL::Polygon_mesh_processing::is_outward_oriented(octahedron));
+  }
+  Mesh empty;
+  CHECK_THROWS(SN::make_subdivided_cube(0, empty));
+}

@@ -1,0 +1,200 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// `sigmoid-neighborhoods filter-normals`: the normal voting tensor filter of Yadav et al. (2018) on
+// one model, with the default ball neighborhoods or adaptive sizes (SPEC §7), as a point set.
+
+#ifndef SIGMOID_NEIGHBORHOODS_TOOL_FILTER_COMMAND_H
+#define SIGMOID_NEIGHBORHOODS_TOOL_FILTER_COMMAND_H
+
+#include "command_line.h"
+#include "optimal_command.h"
+
+#include <CGAL/Sigmoid_neighborhoods/filter_normals.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
+
+#include <CGAL/Point_set_3.h>
+#include <CGAL/Point_set_3/IO.h>
+#include <CGAL/Real_timer.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace sigmoid_tool {
+
+inline const char* FILTER_USAGE =
+  "usage: sigmoid-neighborhoods filter-normals INPUT -o OUTPUT [--adaptive] [--iterations 50] [--cut-off 0.9]\n"
+  "         [--eigenvalue-threshold 0.25] [--damping 3] [--radius R] [--size-range 10]\n"
+  "         [--angle-tolerance 1e-6] [--threads N]\n"
+  "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply; normals estimated when absent)\n"
+  "  OUTPUT: .xyz or .pwn (x y z nx ny nz, 17 significant digits) or .ply (binary point cloud with normals)\n"
+  "  --radius: the ball radius of the neighborhoods (default 5 times the mean distance to 12 neighbors)\n"
+  "  --adaptive: every point picks its k in {k_i - R, ..., k_i + R} (R = --size-range) of least E_dim\n"
+  "              with the cut-off weights, in every sweep (SPEC §7)\n";
+
+struct Filter_options
+{
+  unsigned int iterations = SN::DEFAULT_FILTER_ITERATIONS;
+  double cut_off = SN::DEFAULT_NORMAL_CUT_OFF;
+  double eigenvalue_threshold = SN::DEFAULT_EIGENVALUE_THRESHOLD;
+  double damping = SN::DEFAULT_DAMPING_FACTOR;
+  double radius = 0.; // 0: the default 5 m
+  bool adaptive = false;
+  unsigned int size_range = SN::DEFAULT_NEIGHBORHOOD_SIZE_RANGE;
+  double angle_tolerance = SN::DEFAULT_ANGLE_TOLERANCE;
+};
+
+// Filters `normals` (one per point of `points`) in place.
+template <typename Point, typename Vector>
+SN::Normal_filter_summary filter_point_normals(const std::vector<Point>& points, std::vector<Vector>& normals,
+                                               const Filter_options& o)
+{
+  namespace SNP = SN::parameters;
+  std::vector<std::uint32_t> indices(points.size());
+  for(std::size_t i = 0; i < indices.size(); ++i)
+    indices[i] = std::uint32_t(i);
+  return SN::filter_normals<SN::Parallel_if_available_tag>(
+    indices,
+    SNP::normal_cut_off(o.cut_off, SNP::eigenvalue_threshold(o.eigenvalue_threshold, SNP::damping_factor(o.damping,
+      SNP::adaptive_neighborhood_size(o.adaptive, SNP::neighborhood_size_range(o.size_range,
+        SNP::angle_tolerance(o.angle_tolerance,
+          CGAL::parameters::number_of_iterations(o.iterations)
+            .neighbor_radius(o.radius)
+            .point_map(CGAL::make_property_map(points))
+            .normal_map(CGAL::make_property_map(normals)))))))));
+}
+
+inline Filter_options read_filter_options(const Arguments& args)
+{
+  Filter_options o;
+  o.iterations = args.get_unsigned("--iterations", o.iterations);
+  o.cut_off = args.get_double("--cut-off", o.cut_off);
+  if(!(o.cut_off >= -1. && o.cut_off <= 1.))
+    throw Usage_error("--cut-off must lie in [-1, 1]");
+  o.eigenvalue_threshold = args.get_double("--eigenvalue-threshold", o.eigenvalue_threshold);
+  if(!std::isfinite(o.eigenvalue_threshold))
+    throw Usage_error("--eigenvalue-threshold must be a finite number");
+  o.damping = args.get_double("--damping", o.damping);
+  if(!(o.damping >= 0. && std::isfinite(o.damping)))
+    throw Usage_error("--damping must be finite and >= 0");
+  o.radius = args.get_double("--radius", 0.);
+  if(args.has("--radius") && !(o.radius > 0. && std::isfinite(o.radius)))
+    throw Usage_error("--radius must be finite and > 0");
+  o.adaptive = args.has("--adaptive");
+  o.size_range = args.get_unsigned("--size-range", o.size_range);
+  o.angle_tolerance = args.get_double("--angle-tolerance", o.angle_tolerance);
+  if(!(o.angle_tolerance >= 0. && o.angle_tolerance < 3.14159))
+    throw Usage_error("--angle-tolerance must be in [0, pi)");
+  const int threads = static_cast<int>(args.get_unsigned("--threads", 0));
+#ifdef _OPENMP
+  if(threads > 0)
+    omp_set_num_threads(threads);
+#else
+  (void)threads;
+#endif
+  return o;
+}
+
+inline void write_filtered_xyz(std::ostream& out, const SN::Oriented_point_set& model,
+                               const std::vector<SN::Oriented_point_set::Vector_3>& normals)
+{
+  for(std::size_t i = 0; i < normals.size(); ++i)
+  {
+    const auto& p = model.points[i];
+    const auto& n = normals[i];
+    bool first = true;
+    for(double v : {p.x(), p.y(), p.z(), n.x(), n.y(), n.z()})
+    {
+      if(!first)
+        out << ' ';
+      print_number(out, v);
+      first = false;
+    }
+    out << '\n';
+  }
+}
+
+inline void write_filtered_ply(std::ostream& out, const SN::Oriented_point_set& model,
+                               const std::vector<SN::Oriented_point_set::Vector_3>& normals)
+{
+  typedef CGAL::Point_set_3<SN::Oriented_point_set::Point_3, SN::Oriented_point_set::Vector_3> Point_set;
+  Point_set ps(true);
+  ps.reserve(normals.size());
+  for(std::size_t i = 0; i < normals.size(); ++i)
+    ps.insert(model.points[i], normals[i]);
+  CGAL::IO::set_binary_mode(out);
+  if(!CGAL::IO::write_PLY(out, ps))
+    throw Usage_error("cannot write the PLY file");
+}
+
+inline int run_filter_normals(int argc, char** argv)
+{
+  const Arguments args(argc, argv, 2,
+                       {"-o", "--output", "--iterations", "--cut-off", "--eigenvalue-threshold", "--damping", "--radius",
+                        "--size-range", "--angle-tolerance", "--threads"},
+                       {"-h", "--help", "--adaptive"});
+  if(args.has("-h") || args.has("--help"))
+  {
+    std::cout << FILTER_USAGE;
+    return EXIT_OK;
+  }
+  if(args.positional().size() != 1)
+    throw Usage_error("filter-normals needs exactly one INPUT");
+  const std::string input = args.positional()[0];
+  const std::string output = args.get("-o", args.get("--output"));
+  if(output.empty())
+    throw Usage_error("filter-normals needs -o OUTPUT (.xyz, .pwn or .ply)");
+  const std::string ext = SN::internal::lower_extension(output);
+  if(ext != "xyz" && ext != "pwn" && ext != "ply")
+    throw Usage_error("unknown output format '" + (ext.empty() ? std::string("(no extension)") : "." + ext) +
+                      "': expected .xyz, .pwn or .ply");
+  const Filter_options options = read_filter_options(args);
+
+  CGAL::Real_timer timer;
+  timer.start();
+  SN::Oriented_point_set model;
+  try
+  {
+    model = SN::read_oriented_point_set(input);
+  }
+  catch(const SN::Input_error& e)
+  {
+    throw Usage_error(input + ": " + e.what());
+  }
+  std::vector<SN::Oriented_point_set::Vector_3> normals = model.normals;
+  SN::Normal_filter_summary summary;
+  try
+  {
+    summary = filter_point_normals(model.points, normals, options);
+  }
+  catch(const std::invalid_argument& e)
+  {
+    throw Usage_error(input + ": " + e.what());
+  }
+
+  if(ext == "ply")
+    write_file_atomically(output, [&](std::ofstream& out) { write_filtered_ply(out, model, normals); }, true);
+  else
+    write_file_atomically(output, [&](std::ofstream& out) { write_filtered_xyz(out, model, normals); });
+  timer.stop();
+  char line[256];
+  std::snprintf(line, sizeof(line), "%u sweeps, radius %.6g, mean neighborhood %.1f points, %zu empty cones",
+                summary.iterations, summary.radius, summary.mean_neighbors, summary.empty_cones);
+  std::string text = line;
+  if(options.adaptive)
+  {
+    std::snprintf(line, sizeof(line), ", adaptive: mean k %.1f, %zu fallbacks", summary.mean_selected_size,
+                  summary.fallbacks);
+    text += line;
+  }
+  std::snprintf(line, sizeof(line), ", %.2f s", timer.time());
+  std::cerr << input << ": " << model_description(model) << ", " << text << line << '\n';
+  return EXIT_OK;
+}
+
+} // namespace sigmoid_tool
+
+#endif // SIGMOID_NEIGHBORHOODS_TOOL_FILTER_COMMAND_H
