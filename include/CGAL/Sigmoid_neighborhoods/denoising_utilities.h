@@ -27,7 +27,7 @@ namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsRef
+  \ingroup PkgSigmoidNeighborhoodsNormalFilter
   \brief the mean over all points of their mean distance to their `k` nearest other points: the
   spacing `l` of the denoising experiment with `k = 6` (SPEC §7), the scale `m` of the normal filter
   with `k = 12`.
@@ -37,7 +37,11 @@ namespace Sigmoid_neighborhoods {
   the order of `points`: the value is the same for any number of threads.
 
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag`
-  \param np optional: `point_map` (CGAL)
+  \tparam PointRange a model of `ConstRange` whose value type is the key type of `point_map`
+  \tparam NamedParameters a sequence of named parameters
+  \param points the points
+  \param k the number of neighbors of each point
+  \param np optional: `point_map` (CGAL), as in `compute_optimal_sigmoid_neighborhoods()`
   \pre `k >= 1`, at least `k + 1` points with finite coordinates; otherwise `std::invalid_argument`
 */
 template <typename ConcurrencyTag, typename PointRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
@@ -59,7 +63,7 @@ double compute_mean_neighbor_distance(const PointRange& points, unsigned int k,
 }
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsRef
+  \ingroup PkgSigmoidNeighborhoodsNormalFilter
   \brief moves every point along its unit normal by a Gaussian offset: `p_i <- p_i + e_i n_i`,
   `e_i ~ N(0, standard_deviation^2)` (SPEC §7).
 
@@ -67,6 +71,8 @@ double compute_mean_neighbor_distance(const PointRange& points, unsigned int k,
   through `std::normal_distribution<double>`: the same seed gives the same points (with one
   standard library; the distribution's algorithm is implementation-defined).
 
+  \tparam PointRange a model of `Range` whose value type is the key type of the maps
+  \tparam NamedParameters a sequence of named parameters
   \param points the points, moved in place through `point_map`
   \param standard_deviation the standard deviation of the offsets, finite and `>= 0`
   \param seed the seed of the random engine
@@ -107,7 +113,7 @@ void add_normal_noise(PointRange& points, double standard_deviation, std::uint64
 }
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsRef
+  \ingroup PkgSigmoidNeighborhoodsNormalFilter
   `|n - m|^2` for two vectors whose coordinates are read as `v[0]`, `v[1]`, `v[2]`
   (a CGAL `Vector_3`, `Eigen::Vector3d`).
 */
@@ -121,7 +127,7 @@ double normal_squared_error(const Vector1& n, const Vector2& m)
 }
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsRef
+  \ingroup PkgSigmoidNeighborhoodsNormalFilter
   \brief the mean squared error `(1/n) sum_i |n_i - m_i|^2` of normals against reference normals
   (SPEC §7), summed in order. For unit normals it lies in `[0, 4]`: 0 for equal normals, 4 for
   opposite ones.

@@ -69,23 +69,30 @@ CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER(neighborhood_size_range_t,
 
 #undef CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER
 
+/// \ingroup PkgSigmoidNeighborhoodsNormalFilter
 /// The default number of sweeps `p` of `filter_normals()` (the authors' code).
 constexpr unsigned int DEFAULT_FILTER_ITERATIONS = 50;
+/// \ingroup PkgSigmoidNeighborhoodsNormalFilter
 /// The default dot-product cut-off `rho`: neighbor `j` votes for `i` when `n_i * n_j > rho`.
 constexpr double DEFAULT_NORMAL_CUT_OFF = 0.9;
+/// \ingroup PkgSigmoidNeighborhoodsNormalFilter
 /// The default eigenvalue threshold `tau` of the binary eigenvalue optimisation.
 constexpr double DEFAULT_EIGENVALUE_THRESHOLD = 0.25;
+/// \ingroup PkgSigmoidNeighborhoodsNormalFilter
 /// The default damping factor `d` of the update `n <- normalize(T n + d n)`.
 constexpr double DEFAULT_DAMPING_FACTOR = 3.;
+/// \ingroup PkgSigmoidNeighborhoodsNormalFilter
 /// The default half width of the adaptive sizes `{k_i - 10, ..., k_i + 10}` (SPEC §7).
 constexpr unsigned int DEFAULT_NEIGHBORHOOD_SIZE_RANGE = 10;
+/// \ingroup PkgSigmoidNeighborhoodsNormalFilter
 /// The scale `m` of the default ball radius `5 m` is the mean distance to this many neighbors.
 constexpr unsigned int FILTER_SCALE_NEIGHBORS = 12;
+/// \ingroup PkgSigmoidNeighborhoodsNormalFilter
 /// The default ball radius is this factor times the scale `m`.
 constexpr double FILTER_RADIUS_FACTOR = 5.;
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsRef
+  \ingroup PkgSigmoidNeighborhoodsNormalFilter
   what `filter_normals()` did. Counts over sweeps count one per point and sweep.
 */
 struct Normal_filter_summary
@@ -380,7 +387,7 @@ Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_
 /// \endcond
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsRef
+  \ingroup PkgSigmoidNeighborhoodsNormalFilter
   \brief filters the normals of a point set by the normal voting tensor of Yadav et al. (2018),
   stage 1 of their denoising (`yadav-normal-filtering.md`), and writes them back to `normal_map`.
 
@@ -403,22 +410,96 @@ Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_
 
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag` (OpenMP)
   \tparam PointRange a model of `Range` whose value type is the key type of the maps
+  \tparam NamedParameters a sequence of named parameters
 
   \param points the input points with oriented normals
-  \param np optional named parameters (ours first, CGAL's after):
-    - `point_map` (CGAL), `normal_map` (CGAL, required, a `ReadWritePropertyMap`): normals need
-      not be unit; they are written back unit;
-    - `number_of_iterations` (CGAL): `p`, default 50;
-    - `neighbor_radius` (CGAL): the ball radius, default `5 m`;
-    - `Sigmoid_neighborhoods::parameters::normal_cut_off`: `rho` in `[-1, 1]`, default 0.9;
-    - `eigenvalue_threshold`: `tau`, default 0.25;
-    - `damping_factor`: `d >= 0`, default 3;
-    - `neighborhoods`: the caller's neighborhoods instead of the balls, a range (one per point, in
-      the order of `points`) of ranges of indices into `points`, never the point itself
-      (`std::cref` avoids a copy);
-    - `adaptive_neighborhood_size`: `bool`, default `false`;
-    - `neighborhood_size_range`: `r`, default 10;
-    - `angle_tolerance`, `barycenter`: of the adaptive `E_dim` (SPEC §3, §4).
+  \param np an optional sequence of named parameters among the ones listed below: CGAL's
+    (`CGAL::parameters`) and the package's (`CGAL::Sigmoid_neighborhoods::parameters`, which come
+    first in a chain, see \ref Sigmoid_neighborhoods_named_parameters)
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{point_map}
+      \cgalParamDescription{a property map associating points to the elements of `points`}
+      \cgalParamType{a model of `ReadablePropertyMap` whose key type is the value type of `PointRange`
+        and whose value type is a `Point_3` of a CGAL kernel}
+      \cgalParamDefault{`CGAL::Identity_property_map<Point_3>`}
+    \cgalParamNEnd
+    \cgalParamNBegin{normal_map}
+      \cgalParamDescription{a property map associating oriented normals to the elements of `points`;
+        the filtered normals are written back to it, unit length}
+      \cgalParamType{a model of `ReadWritePropertyMap` whose key type is the value type of `PointRange`
+        and whose value type is a `Vector_3` of a CGAL kernel}
+      \cgalParamDefault{none: required (a static assertion fails without it)}
+      \cgalParamExtra{normals need not be unit length; a zero or non-finite normal is an error}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_iterations}
+      \cgalParamDescription{the number of sweeps `p`}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{`DEFAULT_FILTER_ITERATIONS` (50)}
+      \cgalParamExtra{a CGAL named parameter}
+    \cgalParamNEnd
+    \cgalParamNBegin{neighbor_radius}
+      \cgalParamDescription{the radius of the default ball neighborhoods}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`5 m`, `m` the mean distance of the points to their 12 nearest neighbors
+        (`FILTER_RADIUS_FACTOR`, `FILTER_SCALE_NEIGHBORS`)}
+      \cgalParamExtra{a CGAL named parameter; finite and `>= 0` (0 selects the default), otherwise
+        `std::invalid_argument`; not read when `neighborhoods` is given}
+    \cgalParamNEnd
+    \cgalParamNBegin{normal_cut_off}
+      \cgalParamDescription{the dot-product cut-off `rho`: neighbor `j` votes for `i` when `n_i * n_j > rho`}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`DEFAULT_NORMAL_CUT_OFF` (0.9)}
+      \cgalParamExtra{in `[-1, 1]`, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+    \cgalParamNBegin{eigenvalue_threshold}
+      \cgalParamDescription{the threshold `tau` of the binary eigenvalue optimisation: eigenvalues of
+        the voting tensor below it become 0, the others 1 (the largest always 1)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`DEFAULT_EIGENVALUE_THRESHOLD` (0.25)}
+      \cgalParamExtra{finite, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+    \cgalParamNBegin{damping_factor}
+      \cgalParamDescription{the damping factor `d` of the update `n_i <- normalize(T~ n_i + d n_i)`}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`DEFAULT_DAMPING_FACTOR` (3)}
+      \cgalParamExtra{finite and `>= 0`, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+    \cgalParamNBegin{neighborhoods}
+      \cgalParamDescription{the caller's neighborhoods instead of the balls}
+      \cgalParamType{a range of ranges of integer indices (`std::cref()` of one avoids a copy)}
+      \cgalParamDefault{the ball neighborhoods}
+      \cgalParamExtra{one range per point, in the order of `points`, of indices into `points`,
+        never the point itself, otherwise `std::invalid_argument`; with it, `neighbor_radius` is not read}
+    \cgalParamNEnd
+    \cgalParamNBegin{adaptive_neighborhood_size}
+      \cgalParamDescription{whether every point chooses, in every sweep, its `k` nearest neighbors with
+        the `k` of least `E_dim` (weights `sig_{a,a}`, `a = arccos(rho)`) among
+        `{k_i - r, ..., k_i + r}`, `k_i` the size of its default neighborhood}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`false`}
+      \cgalParamExtra{a point for which every size is degenerate uses its default neighborhood
+        with equal weights}
+    \cgalParamNEnd
+    \cgalParamNBegin{neighborhood_size_range}
+      \cgalParamDescription{the half width `r` of the adaptive sizes}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{`DEFAULT_NEIGHBORHOOD_SIZE_RANGE` (10)}
+      \cgalParamExtra{only positive sizes, at most `n - 1`, are tried}
+    \cgalParamNEnd
+    \cgalParamNBegin{angle_tolerance}
+      \cgalParamDescription{angles up to it (radians) count as 0 in the adaptive `E_dim`}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`DEFAULT_ANGLE_TOLERANCE` (`1e-6`)}
+      \cgalParamExtra{in `[0, pi)`, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+    \cgalParamNBegin{barycenter}
+      \cgalParamDescription{the centre of the covariance matrix of the adaptive `E_dim`}
+      \cgalParamType{`Barycenter`}
+      \cgalParamDefault{`Barycenter::WEIGHTED`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
 
   \pre no point has a zero or non-finite normal or a non-finite coordinate; at least 13 points
   when the default radius is used; otherwise `std::invalid_argument`.
@@ -454,17 +535,102 @@ Normal_filter_summary filter_normals(PointRange& points, const CGAL_NP_CLASS& np
 }
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsRef
+  \ingroup PkgSigmoidNeighborhoodsNormalFilter
   \brief the same filter on the vertices of a `Surface_mesh` (SPEC §1): input normals from
   `vertex_normal_map` or else `Polygon_mesh_processing::compute_vertex_normals()`, vertices at one
   position merged (the smallest index kept; its copies get its normal), vertices without a face or
   with an undefined normal left out (they get the zero vector).
 
+  \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag` (OpenMP)
+  \tparam Point the point type of the mesh, a `Point_3` of a CGAL kernel
   \tparam VertexNormalMap a `WritablePropertyMap` from vertex descriptors to `Vector_3`
+  \tparam NamedParameters a sequence of named parameters
+  \param mesh the input mesh; vertex positions are read from `mesh.points()`
   \param filtered_normals receives the filtered normal of every vertex (it may be the input map)
-  \param np the parameters of the point range version but `point_map`/`normal_map`, and
-    `vertex_normal_map` (CGAL); `neighborhoods` holds one range per vertex index
-    (`std::size_t(v)`, removed vertices included) of neighboring vertex indices.
+  \param np an optional sequence of named parameters among the ones listed below: CGAL's
+    (`CGAL::parameters`) and the package's (`CGAL::Sigmoid_neighborhoods::parameters`, which come
+    first in a chain, see \ref Sigmoid_neighborhoods_named_parameters)
+
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_normal_map}
+      \cgalParamDescription{a property map associating the input normals to the vertices of `mesh`}
+      \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as key type and
+        a `Vector_3` of the kernel of `Point` as value type}
+      \cgalParamDefault{the normals of `CGAL::Polygon_mesh_processing::compute_vertex_normals()`}
+      \cgalParamExtra{a vertex whose normal is zero or not finite is left out}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_iterations}
+      \cgalParamDescription{the number of sweeps `p`}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{`DEFAULT_FILTER_ITERATIONS` (50)}
+      \cgalParamExtra{a CGAL named parameter}
+    \cgalParamNEnd
+    \cgalParamNBegin{neighbor_radius}
+      \cgalParamDescription{the radius of the default ball neighborhoods}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`5 m`, `m` the mean distance of the points to their 12 nearest neighbors
+        (`FILTER_RADIUS_FACTOR`, `FILTER_SCALE_NEIGHBORS`)}
+      \cgalParamExtra{a CGAL named parameter; finite and `>= 0` (0 selects the default), otherwise
+        `std::invalid_argument`; not read when `neighborhoods` is given}
+    \cgalParamNEnd
+    \cgalParamNBegin{normal_cut_off}
+      \cgalParamDescription{the dot-product cut-off `rho`: neighbor `j` votes for `i` when `n_i * n_j > rho`}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`DEFAULT_NORMAL_CUT_OFF` (0.9)}
+      \cgalParamExtra{in `[-1, 1]`, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+    \cgalParamNBegin{eigenvalue_threshold}
+      \cgalParamDescription{the threshold `tau` of the binary eigenvalue optimisation: eigenvalues of
+        the voting tensor below it become 0, the others 1 (the largest always 1)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`DEFAULT_EIGENVALUE_THRESHOLD` (0.25)}
+      \cgalParamExtra{finite, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+    \cgalParamNBegin{damping_factor}
+      \cgalParamDescription{the damping factor `d` of the update `n_i <- normalize(T~ n_i + d n_i)`}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`DEFAULT_DAMPING_FACTOR` (3)}
+      \cgalParamExtra{finite and `>= 0`, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+    \cgalParamNBegin{neighborhoods}
+      \cgalParamDescription{the caller's neighborhoods instead of the balls}
+      \cgalParamType{a range of ranges of integer indices (`std::cref()` of one avoids a copy)}
+      \cgalParamDefault{the ball neighborhoods}
+      \cgalParamExtra{one range per vertex index (`std::size_t(v)`, removed vertices included)
+        of neighboring vertex indices, never the vertex itself, otherwise `std::invalid_argument`;
+        with it, `neighbor_radius` is not read}
+    \cgalParamNEnd
+    \cgalParamNBegin{adaptive_neighborhood_size}
+      \cgalParamDescription{whether every point chooses, in every sweep, its `k` nearest neighbors with
+        the `k` of least `E_dim` (weights `sig_{a,a}`, `a = arccos(rho)`) among
+        `{k_i - r, ..., k_i + r}`, `k_i` the size of its default neighborhood}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`false`}
+      \cgalParamExtra{a point for which every size is degenerate uses its default neighborhood
+        with equal weights}
+    \cgalParamNEnd
+    \cgalParamNBegin{neighborhood_size_range}
+      \cgalParamDescription{the half width `r` of the adaptive sizes}
+      \cgalParamType{`unsigned int`}
+      \cgalParamDefault{`DEFAULT_NEIGHBORHOOD_SIZE_RANGE` (10)}
+      \cgalParamExtra{only positive sizes, at most `n - 1`, are tried}
+    \cgalParamNEnd
+    \cgalParamNBegin{angle_tolerance}
+      \cgalParamDescription{angles up to it (radians) count as 0 in the adaptive `E_dim`}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`DEFAULT_ANGLE_TOLERANCE` (`1e-6`)}
+      \cgalParamExtra{in `[0, pi)`, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+    \cgalParamNBegin{barycenter}
+      \cgalParamDescription{the centre of the covariance matrix of the adaptive `E_dim`}
+      \cgalParamType{`Barycenter`}
+      \cgalParamDefault{`Barycenter::WEIGHTED`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+  \pre finite coordinates; at least 13 points when the default radius is used; otherwise
+  `std::invalid_argument`
+  \return what was done, with `Normal_filter_summary::mesh` set
 */
 template <typename ConcurrencyTag, typename Point, typename VertexNormalMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Normal_filter_summary filter_normals(const CGAL::Surface_mesh<Point>& mesh, VertexNormalMap filtered_normals,

@@ -41,7 +41,7 @@ using Mesh_point_t = typename boost::property_traits<
 /// \endcond
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsRef
+  \ingroup PkgSigmoidNeighborhoodsNormalFilter
   \brief adds to `mesh` the surface of the cube `[-1, 1]^3`, each face cut into `m x m` squares
   and each square into two triangles (the same diagonal everywhere), outward oriented:
   `6 m^2 + 2` vertices and `12 m^2` triangles. `m = 18` gives 1,946 vertices, the nearest to the
@@ -87,7 +87,7 @@ void make_subdivided_cube(unsigned int m, PolygonMesh& mesh)
 }
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsRef
+  \ingroup PkgSigmoidNeighborhoodsNormalFilter
   \brief adds to `mesh` the surface of the octahedron `|x| + |y| + |z| = 1`, each face cut into
   `m^2` equal triangles, outward oriented: `4 m^2 + 2` vertices and `8 m^2` triangles. `m = 64`
   gives 16,386 vertices, the nearest to the 16,395 of the octahedron of Yadav et al. (2018).
