@@ -173,14 +173,17 @@ std::size_t current_rss_bytes()
   return std::size_t(resident) * std::size_t(::sysconf(_SC_PAGESIZE));
 }
 
-// Runs `work` in a child process; returns its seconds and its peak memory above the start.
+// Runs `work` in a child process; returns its seconds, its peak memory above the start and the
+// number `work` returns. A child per measurement isolates the peak memory; the parent itself never
+// starts OpenMP threads, which a forked child could not use.
 struct Measure
 {
   double seconds = 0.;
   double extra_bytes = 0.;
+  double value = 0.;
 };
 
-Measure measure(const std::function<void()>& work)
+Measure measure(const std::function<double()>& work)
 {
   int pipe_fd[2];
   if(::pipe(pipe_fd) != 0)
@@ -192,23 +195,23 @@ Measure measure(const std::function<void()>& work)
     const double before = double(current_rss_bytes());
     CGAL::Real_timer t;
     t.start();
-    work();
+    const double value = work();
     t.stop();
     struct rusage usage;
     ::getrusage(RUSAGE_SELF, &usage);
-    const double m[2] = {t.time(), double(usage.ru_maxrss) * 1024. - before};
+    const double m[3] = {t.time(), double(usage.ru_maxrss) * 1024. - before, value};
     if(::write(pipe_fd[1], m, sizeof(m)) != sizeof(m))
       ::_exit(1);
     ::_exit(0);
   }
   ::close(pipe_fd[1]);
-  double m[2] = {0., 0.};
+  double m[3] = {0., 0., 0.};
   if(::read(pipe_fd[0], m, sizeof(m)) != sizeof(m))
     throw std::runtime_error("measurement failed");
   ::close(pipe_fd[0]);
   int status;
   ::waitpid(child, &status, 0);
-  return Measure{m[0], m[1]};
+  return Measure{m[0], m[1], m[2]};
 }
 
 void run(const Data& data, int threads, bool with_plain)
@@ -233,8 +236,7 @@ void run(const Data& data, int threads, bool with_plain)
     Neighborhood neighborhood(data.points, CGAL::Identity_property_map<Point_3>(), CGAL::Sequential_tag());
     auto eigen = CGAL::Classification::Local_eigen_analysis::create_from_point_set(
       data.points, CGAL::Identity_property_map<Point_3>(), neighborhood.k_neighbor_query(20), CGAL::Sequential_tag());
-    volatile float sink = eigen.eigenvalue(0)[0];
-    (void)sink;
+    return double(eigen.eigenvalue(0)[0]);
   });
   // the k-NN share: one query of k_max = 20 neighbors per point
   const Measure knn = measure([&] {
@@ -242,44 +244,51 @@ void run(const Data& data, int threads, bool with_plain)
     SNI::for_each_index<CGAL::Parallel_tag>(
       n, [] { return std::vector<SNI::Neighbor>(); },
       [&](std::size_t i, std::vector<SNI::Neighbor>& found) { query.query(std::uint32_t(i), 20, found); });
+    return 0.;
   });
-  // (c) the optimal search; its records are compared with (b) below
-  std::vector<SN::Optimal_sigmoid_neighborhood> optimal;
-  // The records are consumed as they come: the memory measured is the library's own.
+  // (c) the optimal search. The records are consumed as they come: the memory measured is the library's own.
   const Measure c = measure([&] {
     double checksum = 0.;
     SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(
       indices, boost::make_function_output_iterator([&](const SN::Optimal_sigmoid_neighborhood& r) {
         checksum += r.k;
       }), np);
-    volatile double sink = checksum;
-    (void)sink;
+    return checksum;
   });
-  SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(indices, std::back_inserter(optimal), np);
   // (d) one fixed triple
   const Measure d = measure([&] {
     std::vector<SN::Dimensionality_features> features;
     features.reserve(n);
     SN::compute_sigmoid_features<CGAL::Parallel_tag>(indices, SN::Cosine_sigmoid(0., SNI::PI / 3), 20,
                                                      std::back_inserter(features), np);
+    return features.back().error;
   });
   Measure b;
   std::string identical = "not-checked";
   if(with_plain)
   {
-    b = measure([&] { plain_loop(input); });
-    const auto plain = plain_loop(input);
-    std::size_t differ = 0;
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      const auto &p = plain[i], &o = optimal[i];
-      const bool same = p.k == o.k && (p.k == 0 || (p.a == o.a && p.b == o.b)) &&
-                        std::memcmp(&p.features.error, &o.features.error, sizeof(double)) == 0;
-      differ += !same;
-    }
-    identical = differ == 0 ? "yes" : "no";
-    if(differ)
-      std::printf("  (b) and (c) differ on %zu points\n", differ);
+    b = measure([&] {
+      plain_loop(input);
+      return 0.;
+    });
+    // (a*, b*, k*, E) of (b) and (c) on every point: the number of points where they differ
+    const Measure check = measure([&] {
+      const auto plain = plain_loop(input);
+      std::vector<SN::Optimal_sigmoid_neighborhood> optimal;
+      SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(indices, std::back_inserter(optimal), np);
+      std::size_t differ = 0;
+      for(std::size_t i = 0; i < n; ++i)
+      {
+        const auto &p = plain[i], &o = optimal[i];
+        const bool same = p.k == o.k && (p.k == 0 || (p.a == o.a && p.b == o.b)) &&
+                          std::memcmp(&p.features.error, &o.features.error, sizeof(double)) == 0;
+        differ += !same;
+      }
+      return double(differ);
+    });
+    identical = check.value == 0. ? "yes" : "no";
+    if(check.value != 0.)
+      std::printf("  (b) and (c) differ on %.0f points\n", check.value);
   }
   auto rate = [n](const Measure& m) { return m.seconds > 0 ? double(n) / m.seconds : 0.; };
   std::printf("%s, %zu points, %d threads\n", data.name.c_str(), n, threads);

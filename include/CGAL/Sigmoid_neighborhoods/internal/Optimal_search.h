@@ -88,6 +88,8 @@ public:
       s.source[p] = p;
       for(std::size_t q = 0; q < p && s.shared[p] < m; ++q)
       {
+        if(s.shared[q] == m)
+          continue; // q repeats an earlier pair entirely: that one is compared instead
         const double* v = &s.weights[q * m];
         std::size_t l = 0;
         while(l < m && v[l] == w[l])
@@ -98,7 +100,8 @@ public:
           s.source[p] = q;
         }
       }
-      approximate_errors(s.local, w, s.shared[p], &s.approx[p * sizes]);
+      if(s.shared[p] < m)
+        approximate_errors(s.local, w, s.shared[p], &s.approx[p * sizes]);
       for(unsigned int k = k_min; std::size_t(k) + 1 <= s.shared[p] && k <= k_max; ++k)
         s.approx[p * sizes + (k - k_min)] = s.approx[s.source[p] * sizes + (k - k_min)];
     }
