@@ -72,7 +72,8 @@ evaluate: build corpus
 	  --figure-model $(CORPUS_DIR)/data/meshes/fandisk.off
 	$(TOOL) optimal $(CORPUS_DIR)/data/meshes/fandisk.off -o $(RESULTS_DIR)/fandisk_optimal.csv \
 	  --ply $(RESULTS_DIR)/fandisk_optimal.ply
-	@echo "Report: $(RESULTS_DIR)/report.md"
+	$(TOOL) denoise-experiment -o $(RESULTS_DIR)/table4 --seed 1 --fandisk $(CORPUS_DIR)/data/meshes/fandisk.off
+	@echo "Report: $(RESULTS_DIR)/report.md; the denoising experiment: $(RESULTS_DIR)/table4/table4.md"
 
 clean:
 	rm -rf $(BUILD_DIR)

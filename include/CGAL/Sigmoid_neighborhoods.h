@@ -15,5 +15,10 @@
 #include <CGAL/Sigmoid_neighborhoods/Optimal_sigmoid_neighborhood.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_sigmoid_features.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/evaluate_sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>
+#include <CGAL/Sigmoid_neighborhoods/filter_normals.h>
+#include <CGAL/Sigmoid_neighborhoods/denoising_utilities.h>
+#include <CGAL/Sigmoid_neighborhoods/subdivided_polyhedra.h>
 
 #endif // CGAL_SIGMOID_NEIGHBORHOODS_H

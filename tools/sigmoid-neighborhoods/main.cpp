@@ -7,6 +7,8 @@
 #include "optimal_command.h"
 #include "evaluate_command.h"
 #include "report_command.h"
+#include "filter_command.h"
+#include "denoise_command.h"
 
 #include <exception>
 #include <iostream>
@@ -21,6 +23,8 @@ const char* USAGE =
   "  evaluate  the statistics of the paper's Section 5 over a repository of models (shardable)\n"
   "  merge     merges the evaluation folders of shards\n"
   "  report    Tables 2 and 3 (Markdown) and Figures 3-6 (PNG) of evaluation folders\n"
+  "  filter-normals      the normal filter of Yadav et al. 2018, optionally with adaptive neighborhood sizes\n"
+  "  denoise-experiment  the paper's Table 4: normal MSE of noisy, filtered and adaptively filtered normals\n"
   "run 'sigmoid-neighborhoods COMMAND --help' for the options of a command\n";
 
 } // namespace
@@ -44,6 +48,10 @@ int main(int argc, char** argv)
       return run_merge(argc, argv);
     if(command == "report")
       return run_report(argc, argv);
+    if(command == "filter-normals")
+      return run_filter_normals(argc, argv);
+    if(command == "denoise-experiment")
+      return run_denoise_experiment(argc, argv);
     if(command == "-h" || command == "--help" || command == "help")
     {
       std::cout << USAGE;
