@@ -132,6 +132,8 @@ struct Evaluation_statistics
   Evaluation_statistics(unsigned int k_min_, unsigned int k_max_, std::vector<double> a, std::vector<double> b)
     : k_min(k_min_), k_max(k_max_), a_grid(std::move(a)), b_grid(std::move(b))
   {
+    if(!(k_min >= 1 && k_min <= k_max))
+      throw std::invalid_argument("Evaluation_statistics: needs 1 <= k_min <= k_max");
     std::sort(a_grid.begin(), a_grid.end());
     a_grid.erase(std::unique(a_grid.begin(), a_grid.end()), a_grid.end());
     std::sort(b_grid.begin(), b_grid.end());

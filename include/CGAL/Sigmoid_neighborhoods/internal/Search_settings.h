@@ -29,8 +29,9 @@ inline std::vector<double> default_angle_grid()
   return grid;
 }
 
-/// The default smallest and largest `k` (SPEC §5).
+/// The default smallest `k` (SPEC §5).
 constexpr unsigned int DEFAULT_K_MIN = 6;
+/// The default largest `k` (SPEC §5).
 constexpr unsigned int DEFAULT_K_MAX = 20;
 
 namespace internal {
