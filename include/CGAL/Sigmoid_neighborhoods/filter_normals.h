@@ -36,38 +36,7 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
-// The named parameters of `filter_normals()`, made as in parameters.h (which this header does not
-// change): our parameters first in a chain, CGAL's after.
-#define CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER(TAG, NAME)                           \
-  namespace internal_np {                                                                          \
-  enum TAG { NAME };                                                                               \
-  }                                                                                                \
-  namespace parameters {                                                                           \
-  template <typename T>                                                                            \
-  CGAL::Named_function_parameters<T, internal_np::TAG> NAME(const T& value)                        \
-  {                                                                                                \
-    return CGAL::Named_function_parameters<T, internal_np::TAG>(value);                            \
-  }                                                                                                \
-  template <typename T, typename NP_T, typename NP_Tag, typename NP_Base>                          \
-  CGAL::Named_function_parameters<T, internal_np::TAG,                                             \
-                                  CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >         \
-  NAME(const T& value, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& np)           \
-  {                                                                                                \
-    return CGAL::Named_function_parameters<                                                        \
-      T, internal_np::TAG, CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base> >(value, np);    \
-  }                                                                                                \
-  }
-
-/// \cond SKIP_IN_MANUAL
-CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER(normal_cut_off_t, normal_cut_off)
-CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER(eigenvalue_threshold_t, eigenvalue_threshold)
-CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER(damping_factor_t, damping_factor)
-CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER(neighborhoods_t, neighborhoods)
-CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER(adaptive_neighborhood_size_t, adaptive_neighborhood_size)
-CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER(neighborhood_size_range_t, neighborhood_size_range)
-/// \endcond
-
-#undef CGAL_SIGMOID_NEIGHBORHOODS_ADD_FILTER_NAMED_PARAMETER
+// The named parameters of `filter_normals()` are declared in parameters.h with the others.
 
 /// \ingroup PkgSigmoidNeighborhoodsNormalFilter
 /// The default number of sweeps `p` of `filter_normals()` (the authors' code).
