@@ -16,7 +16,7 @@ CGAL_DATA_ARCHIVE = /usr/share/doc/libcgal-dev/data.tar.gz
 CORPUS_DIR = $(BUILD_DIR)/cgal-data
 TOOL = $(BUILD_DIR)/tools/sigmoid-neighborhoods/sigmoid-neighborhoods
 
-.PHONY: all deps configure build doc test evaluate corpus clean
+.PHONY: all deps configure build doc test sanitize evaluate corpus clean
 
 all: build
 
@@ -55,6 +55,14 @@ doc: deps
 
 test: build doc
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+# The test suite built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own folder.
+SANITIZE_DIR ?= build-sanitize
+sanitize: deps
+	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSIGMOID_NEIGHBORHOODS_BUILD_BENCHMARKS=OFF \
+	  -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+	cmake --build $(SANITIZE_DIR) -j $(JOBS)
+	cd $(SANITIZE_DIR) && ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -j $(JOBS)
 
 # The embedded default corpus: the public data of Debian's libcgal-demo.
 corpus: deps
