@@ -17,14 +17,18 @@
 #include <catch2/catch.hpp>
 
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <random>
 #include <string>
@@ -216,47 +220,181 @@ TEST_CASE("evaluate: a corrupt model lands in failures.json, the others are unaf
   CHECK(summary.find("\"failed_models\": 2") != std::string::npos);
 }
 
-TEST_CASE("evaluate: a run killed with SIGKILL and resumed equals the uninterrupted run", "[evaluation][cli]")
+namespace {
+
+// Starts the tool in a child process, stderr to `error_file`; `in_child` runs just before exec.
+pid_t spawn_tool(const std::vector<std::string>& arguments, const fs::path& error_file,
+                 const std::function<void()>& in_child = {})
 {
-  if(!fs::exists(out("single") / "summary.json"))
-    REQUIRE(run("evaluate " + models().string() + " -o " + out("single").string() + " --repository demo") == 0);
-  const fs::path killed = out("killed");
-  for(int attempt = 0; attempt < 3; ++attempt)
+  const pid_t child = ::fork();
+  if(child == 0)
   {
-    fs::remove_all(killed);
-    const pid_t child = ::fork();
-    REQUIRE(child >= 0);
-    if(child == 0)
-    {
-      ::freopen("/dev/null", "w", stderr);
-      ::execl(SN_TOOL_PATH, SN_TOOL_PATH, "evaluate", models().c_str(), "-o", killed.c_str(), "--repository", "demo",
-              "--threads", "1", static_cast<char*>(nullptr));
-      ::_exit(127);
-    }
-    // kill it once some, but not all, models are written
-    const auto start = std::chrono::steady_clock::now();
-    while(std::chrono::steady_clock::now() - start < std::chrono::seconds(20))
-    {
-      std::size_t written = 0;
-      if(fs::exists(killed / "models"))
-        for(const auto& e : fs::recursive_directory_iterator(killed / "models"))
-          written += e.path().extension() == ".json";
-      if(written >= 1)
-        break;
-      std::this_thread::sleep_for(std::chrono::microseconds(200));
-    }
-    ::kill(child, SIGKILL);
-    int status = 0;
-    ::waitpid(child, &status, 0);
-    if(!fs::exists(killed / "summary.json"))
-      break; // killed before the end, as wanted
+    if(!::freopen(error_file.c_str(), "w", stderr))
+      ::_exit(126);
+    if(in_child)
+      in_child();
+    std::vector<char*> argv{const_cast<char*>(SN_TOOL_PATH)};
+    for(const std::string& a : arguments)
+      argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(SN_TOOL_PATH, argv.data());
+    ::_exit(127);
   }
-  CHECK_FALSE(fs::exists(killed / "summary.json"));
-  REQUIRE(run("evaluate " + models().string() + " -o " + killed.string() + " --repository demo --resume") == 0);
-  CHECK(read_text(killed / "summary.json") == read_text(out("single") / "summary.json"));
-  // no temporary file is left behind
-  for(const auto& e : fs::recursive_directory_iterator(killed))
-    CHECK(e.path().filename().string().find(".tmp.") == std::string::npos);
+  return child;
+}
+
+int wait_for(pid_t child)
+{
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return status;
+}
+
+const fs::path& single_run()
+{
+  static const fs::path dir = [] {
+    const fs::path d = out("single");
+    if(!fs::exists(d / "summary.json"))
+      REQUIRE(run("evaluate " + models().string() + " -o " + d.string() + " --repository demo") == 0);
+    return d;
+  }();
+  return dir;
+}
+
+// Every model file in `dir` is complete: byte for byte the uninterrupted run's.
+void check_model_files_complete(const fs::path& dir)
+{
+  if(!fs::exists(dir / "models"))
+    return;
+  for(const auto& e : fs::recursive_directory_iterator(dir / "models"))
+    if(e.is_regular_file() && e.path().extension() == ".json")
+    {
+      INFO(e.path());
+      CHECK(read_text(e.path()) == read_text(single_run() / fs::relative(e.path(), dir)));
+    }
+}
+
+std::size_t count_temporary_files(const fs::path& dir)
+{
+  std::size_t count = 0;
+  if(fs::exists(dir))
+    for(const auto& e : fs::recursive_directory_iterator(dir))
+      count += e.path().filename().string().find(".tmp.") != std::string::npos;
+  return count;
+}
+
+} // namespace
+
+TEST_CASE("evaluate: runs killed with SIGKILL at random moments and resumed equal the uninterrupted run",
+          "[evaluation][cli][faults]")
+{
+  const std::string all_models = models().string();
+  const std::vector<std::string> arguments = {"evaluate", all_models, "-o", out("killed").string(), "--repository",
+                                              "demo", "--threads", "1", "--resume"};
+  // the duration of a whole run on this machine (and build) bounds the random moments
+  fs::remove_all(out("killed"));
+  const auto start = std::chrono::steady_clock::now();
+  REQUIRE(WEXITSTATUS(wait_for(spawn_tool(arguments, out("killed.err")))) == 0);
+  const double whole_run = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  CHECK(read_text(out("killed") / "summary.json") == read_text(single_run() / "summary.json"));
+
+  std::mt19937 rng(20261123);
+  std::uniform_real_distribution<double> moment(0., whole_run);
+  int interrupted = 0, rounds = 0;
+  for(; interrupted < 6 && rounds < 40; ++rounds)
+  {
+    fs::remove_all(out("killed"));
+    // one or two kills in a row, the second one of a resumed run, then a resume to the end
+    for(int kill = 0; kill < 1 + rounds % 2; ++kill)
+    {
+      const pid_t child = spawn_tool(arguments, out("killed.err"));
+      REQUIRE(child > 0);
+      std::this_thread::sleep_for(std::chrono::duration<double>(moment(rng)));
+      ::kill(child, SIGKILL);
+      const int status = wait_for(child);
+      interrupted += WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
+      check_model_files_complete(out("killed"));
+    }
+    // a temporary as a kill in the middle of a write leaves it (rare here: the writes are short)
+    fs::create_directories(out("killed") / "models" / "cubes");
+    std::ofstream(out("killed") / "models" / "cubes" / "cube9.off.json.tmp.4242") << "{\"points\": 3";
+    REQUIRE(WEXITSTATUS(wait_for(spawn_tool(arguments, out("killed.err")))) == 0);
+    CHECK(read_text(out("killed") / "summary.json") == read_text(single_run() / "summary.json"));
+    check_model_files_complete(out("killed"));
+    CHECK(count_temporary_files(out("killed")) == 0);
+  }
+  INFO(rounds << " rounds");
+  CHECK(interrupted >= 6);
+}
+
+TEST_CASE("evaluate and optimal: a full disk gives a clear error and leaves no half-written file",
+          "[evaluation][cli][faults]")
+{
+  // A file size limit below one model file makes every write fail with EFBIG, as a full disk does
+  // with ENOSPC, without needing a small file system.
+  const auto limit_file_size = [] {
+    ::signal(SIGXFSZ, SIG_IGN);
+    const struct rlimit limit = {4096, 4096};
+    ::setrlimit(RLIMIT_FSIZE, &limit);
+  };
+  const fs::path full = out("full");
+  fs::remove_all(full);
+  int status = wait_for(spawn_tool({"evaluate", models().string(), "-o", full.string(), "--threads", "1"},
+                                   out("full.err"), limit_file_size));
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 2);
+  std::string message = read_text(out("full.err"));
+  CHECK(message.find("cannot write") != std::string::npos);
+  CHECK(message.find(std::strerror(EFBIG)) != std::string::npos);
+  CHECK_FALSE(fs::exists(full / "summary.json"));
+  check_model_files_complete(full);
+  CHECK(count_temporary_files(full) == 0);
+
+  const std::string mesh = (models() / "cubes" / "cube9.off").string();
+  status = wait_for(spawn_tool({"optimal", mesh, "-o", (full / "cube.csv").string(), "--ply", (full / "cube.ply").string()},
+                               out("full.err"), limit_file_size));
+  CHECK(WEXITSTATUS(status) == 2);
+  CHECK(read_text(out("full.err")).find(std::strerror(EFBIG)) != std::string::npos);
+  CHECK_FALSE(fs::exists(full / "cube.csv"));
+  CHECK_FALSE(fs::exists(full / "cube.ply"));
+  CHECK(count_temporary_files(full) == 0);
+
+  // an output folder that cannot be created: its parent is a file
+  std::ofstream(out("a_file")) << "x";
+  status = wait_for(spawn_tool({"evaluate", models().string(), "-o", (out("a_file") / "sub").string()}, out("full.err")));
+  CHECK(WEXITSTATUS(status) == 2);
+  message = read_text(out("full.err"));
+  CHECK(message.find("cannot create") != std::string::npos);
+  CHECK(std::count(message.begin(), message.end(), '\n') == 1);
+}
+
+TEST_CASE("evaluate: the same input gives the same bytes on 1, 2 and 3 threads and on every run",
+          "[evaluation][cli][threads]")
+{
+  std::vector<fs::path> runs;
+  for(const char* threads : {"1", "2", "3", "2"})
+  {
+    runs.push_back(out(std::string("threads") + threads + "_" + std::to_string(runs.size())));
+    fs::remove_all(runs.back());
+    REQUIRE(WEXITSTATUS(wait_for(spawn_tool({"evaluate", models().string(), "-o", runs.back().string(), "--threads",
+                                             threads, "--per-point", "--repository", "demo"},
+                                            out("threads.err")))) == 0);
+  }
+  std::size_t compared = 0;
+  for(const auto& e : fs::recursive_directory_iterator(runs.front()))
+  {
+    // run.json alone records the date, the host and the duration
+    if(!e.is_regular_file() || e.path().filename() == "run.json")
+      continue;
+    const std::string expected = read_text(e.path());
+    for(std::size_t r = 1; r < runs.size(); ++r)
+    {
+      INFO(runs[r] / fs::relative(e.path(), runs.front()));
+      CHECK(read_text(runs[r] / fs::relative(e.path(), runs.front())) == expected);
+    }
+    ++compared;
+  }
+  CHECK(compared == 2 + 2 * 7); // summary, failures, and a JSON and a CSV per model
 }
 
 TEST_CASE("report: renders for one and for two repositories", "[evaluation][cli]")

@@ -131,6 +131,14 @@ private:
   std::vector<std::string> m_positional;
 };
 
+// The suffix of write_file_atomically's temporary files: ".tmp." and the writer's process id.
+inline bool is_temporary_file_name(const std::string& name)
+{
+  const std::size_t at = name.rfind(".tmp.");
+  return at != std::string::npos && at + 5 < name.size() &&
+         name.find_first_not_of("0123456789", at + 5) == std::string::npos;
+}
+
 // Writes `path` through a temporary file in the same folder and a rename, so that a reader
 // never sees a half-written file and a failure leaves nothing behind.
 inline void write_file_atomically(const std::string& path, const std::function<void(std::ofstream&)>& write,
@@ -141,10 +149,10 @@ inline void write_file_atomically(const std::string& path, const std::function<v
     std::ofstream out(temporary, binary ? std::ios::binary | std::ios::out : std::ios::out);
     if(!out)
       throw Usage_error("cannot write " + path + ": " + std::strerror(errno));
+    errno = 0;
     try
     {
       write(out);
-      out.flush();
     }
     catch(...)
     {
@@ -152,11 +160,13 @@ inline void write_file_atomically(const std::string& path, const std::function<v
       std::remove(temporary.c_str());
       throw;
     }
-    if(!out)
+    out.close(); // flushes what is left; a failure leaves failbit set
+    if(out.fail())
     {
-      out.close();
+      // errno still holds the failed write's reason: ENOSPC, EDQUOT, EFBIG, EIO...
+      const std::string reason = errno != 0 ? std::strerror(errno) : "write error";
       std::remove(temporary.c_str());
-      throw Usage_error("cannot write " + path + " (disk full?)");
+      throw Usage_error("cannot write " + path + ": " + reason);
     }
   }
   if(std::rename(temporary.c_str(), path.c_str()) != 0)

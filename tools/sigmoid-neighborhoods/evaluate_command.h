@@ -210,6 +210,21 @@ inline Model_result model_result(const Model_file& file, const SN::Oriented_poin
   return m;
 }
 
+// A run killed mid-write (SIGKILL, power loss) leaves write_file_atomically's temporaries behind;
+// an OUTDIR is written by one evaluate at a time, so the next run removes them.
+inline void remove_temporary_files(const std::string& outdir)
+{
+  std::error_code ec;
+  std::vector<fs::path> leftovers;
+  for(fs::recursive_directory_iterator it(outdir, ec), end; !ec && it != end; it.increment(ec))
+    if(it->is_regular_file(ec) && is_temporary_file_name(it->path().filename().string()))
+      leftovers.push_back(it->path());
+  for(const fs::path& file : leftovers)
+    fs::remove(file, ec);
+  if(!leftovers.empty())
+    std::cerr << outdir << ": removed " << leftovers.size() << " temporary files of an interrupted run\n";
+}
+
 inline std::string iso_date()
 {
   char text[64];
@@ -273,6 +288,7 @@ inline int run_evaluate(int argc, char** argv)
   fs::create_directories(fs::path(outdir) / "models", ec);
   if(ec)
     throw Usage_error("cannot create " + outdir + ": " + ec.message());
+  remove_temporary_files(outdir);
 
   std::uintmax_t total_bytes = 0;
   for(const auto& m : models)
