@@ -106,49 +106,33 @@ public:
         s.approx[p * sizes + (k - k_min)] = s.approx[s.source[p] * sizes + (k - k_min)];
     }
 
-    // The scan of SPEC §5, exact wherever it matters.
-    double best = std::numeric_limits<double>::infinity();
-    std::size_t best_pair = 0;
-    unsigned int best_k = 0;
+    // The scan of SPEC §5, exact wherever it matters. A triple whose weights on N_i(k) repeat an
+    // earlier pair's has that triple's error E, already visited: best <= E + tol since, so it
+    // cannot improve, and is skipped.
+    Running_minimum best;
     for(std::size_t p = 0; p < pairs; ++p)
-      for(unsigned int k = k_min; k <= k_max; ++k)
-      {
-        const double approx = s.approx[p * sizes + (k - k_min)];
-        if(approx - APPROXIMATION_MARGIN >= best - TIE_TOLERANCE) // also false for NaN: not trusted
-          continue;
-        const double error = exact_error(s, p, k);
-        if(error < best - TIE_TOLERANCE)
-        {
-          best = error;
-          best_pair = p;
-          best_k = k;
-        }
-      }
+      for(unsigned int k = (std::max)(k_min, unsigned(std::min<std::size_t>(s.shared[p], k_max + 1))); k <= k_max; ++k)
+        visit(s, p, k, best);
 
     Optimal_sigmoid_neighborhood result;
-    if(best_k != 0)
+    if(best.k != 0)
     {
-      result.a = m_sigmoids[best_pair].a();
-      result.b = m_sigmoids[best_pair].b();
-      result.k = best_k;
-      result.features = s.local.features(&s.weights[best_pair * m], best_k, m_settings.barycenter);
+      result.a = m_sigmoids[best.pair].a();
+      result.b = m_sigmoids[best.pair].b();
+      result.k = best.k;
+      result.features = s.local.features(&s.weights[best.pair * m], best.k, m_settings.barycenter);
     }
 
     // Equal weights, best k with the same tie rule.
     if(m_equal_pair >= 0)
     {
-      const std::size_t p = std::size_t(m_equal_pair);
+      Running_minimum equal;
       for(unsigned int k = k_min; k <= k_max; ++k)
+        visit(s, std::size_t(m_equal_pair), k, equal);
+      if(equal.k != 0)
       {
-        const double approx = s.approx[p * sizes + (k - k_min)];
-        if(approx - APPROXIMATION_MARGIN >= result.error_equal - TIE_TOLERANCE)
-          continue;
-        const double error = exact_error(s, p, k);
-        if(error < result.error_equal - TIE_TOLERANCE)
-        {
-          result.error_equal = error;
-          result.k_equal = k;
-        }
+        result.error_equal = exact_value(s, equal);
+        result.k_equal = equal.k;
       }
     }
     else
@@ -170,6 +154,48 @@ public:
   std::size_t size() const { return m_input.size(); }
 
 private:
+  // The best triple so far of a scan: its error is known to lie in [low, high], and is exact once
+  // low == high (SPEC §5's comparisons need it only when the bounds cannot decide them).
+  struct Running_minimum
+  {
+    double low = std::numeric_limits<double>::infinity(), high = std::numeric_limits<double>::infinity();
+    std::size_t pair = 0;
+    unsigned int k = 0; // 0: none yet
+  };
+
+  double exact_value(Scratch& s, Running_minimum& best) const
+  {
+    if(best.low != best.high)
+      best.low = best.high = exact_error(s, best.pair, best.k);
+    return best.low;
+  }
+
+  // One step of the plain loop, `if(E < best - TIE_TOLERANCE) best = E`, decided from the
+  // approximation's bounds [approx - M, approx + M] whenever they decide it (rounding of
+  // `x - TIE_TOLERANCE` is monotone in x, so bounds on both sides bound the comparison), and from
+  // exact errors otherwise. The outcome is the plain loop's, with far fewer exact solves.
+  void visit(Scratch& s, std::size_t p, unsigned int k, Running_minimum& best) const
+  {
+    const double approx = s.approx[p * m_settings.number_of_sizes() + (k - m_settings.k_min)];
+    double low = approx - APPROXIMATION_MARGIN, high = approx + APPROXIMATION_MARGIN;
+    if(std::isnan(approx)) // not trusted
+      low = high = exact_error(s, p, k);
+    if(low >= best.high - TIE_TOLERANCE)
+      return; // E >= low >= best.high - tol >= best - tol: no improvement (nor for E = +inf)
+    if(!(high < best.low - TIE_TOLERANCE))
+    {
+      // the bounds overlap: compare exact values
+      if(low != high)
+        low = high = exact_error(s, p, k);
+      if(!(low < exact_value(s, best) - TIE_TOLERANCE))
+        return;
+    }
+    best.low = low;
+    best.high = high;
+    best.pair = p;
+    best.k = k;
+  }
+
   // The exact error of (pair p, k), computed once for all pairs that share the weights of N_i(k).
   double exact_error(Scratch& s, std::size_t p, unsigned int k) const
   {
