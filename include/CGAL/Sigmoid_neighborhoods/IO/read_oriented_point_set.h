@@ -6,11 +6,13 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_READ_ORIENTED_POINT_SET_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_READ_ORIENTED_POINT_SET_H
 
+#include <CGAL/Sigmoid_neighborhoods/internal/K_neighbor_query.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/mesh_points.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
+#include <CGAL/IO/OFF/File_scanner_OFF.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/IO/STL.h>
 #include <CGAL/Point_set_3.h>
@@ -27,10 +29,12 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -176,6 +180,57 @@ inline void read_xyz(const std::string& filename, std::vector<Oriented_point_set
   has_normals = (columns == 6);
 }
 
+// CGAL's readers trust the counts of a header: `read_OFF()` resizes its vectors to them and
+// `read_PLY()` loops over them, so a header of a few bytes could ask for gigabytes or hours (found
+// by fuzzing). Every vertex, face or PLY element item takes at least one byte of the file.
+inline void check_header_count(std::uintmax_t count, std::uintmax_t file_size, const std::string& what)
+{
+  if(count > file_size)
+    throw Input_error("the header announces " + std::to_string(count) + " " + what + ", more than a file of " +
+                      std::to_string(file_size) + " bytes can hold");
+}
+
+inline void check_off_header(const std::string& filename, std::uintmax_t file_size)
+{
+  std::ifstream in(filename);
+  Captured_cerr quiet;
+  CGAL::File_scanner_OFF header(in); // reads the header only, as `read_OFF()` does first
+  if(in.fail())
+    return; // `read_OFF()` fails on it too, with the reason
+  check_header_count(header.size_of_vertices(), file_size, "vertices");
+  check_header_count(header.size_of_facets(), file_size - header.size_of_vertices(), "faces after the vertices");
+}
+
+// Besides the counts: CGAL 5.5's PLY reader adds a `property` line to the last `element` read so
+// far, and before any `element` line it takes the back() of an empty vector (undefined behavior,
+// a crash; found by fuzzing). The first two lines are the signature and the format, checked by CGAL.
+inline void check_ply_header(const std::string& filename, std::uintmax_t file_size)
+{
+  std::ifstream in(filename, std::ios::binary);
+  std::string line;
+  bool has_element = false;
+  for(std::size_t line_number = 1; std::getline(in, line); ++line_number)
+  {
+    std::istringstream tokens(line);
+    std::string keyword;
+    if(line_number <= 2 || !(tokens >> keyword))
+      continue;
+    if(keyword == "end_header")
+      return;
+    if(keyword == "element")
+    {
+      has_element = true;
+      std::string name;
+      std::size_t items = 0; // read as CGAL reads it
+      if(tokens >> name >> items)
+        check_header_count(items, file_size, "items of element '" + name + "'");
+    }
+    else if(keyword == "property" && !has_element)
+      throw Input_error("cannot parse the file as ply (a property before any element, line " +
+                        std::to_string(line_number) + ")");
+  }
+}
+
 inline bool read_soup(const std::string& filename, const std::string& ext,
                       std::vector<Oriented_point_set::Point_3>& points,
                       std::vector<std::vector<std::size_t>>& polygons)
@@ -284,9 +339,33 @@ inline void merge_duplicate_points(Oriented_point_set& out, bool has_normals)
     out.normals.resize(kept);
 }
 
+// CGAL's jet fitting of degree 2 needs 6 points (a precondition of `Monge_via_jet_fitting`).
+constexpr std::size_t FEWEST_POINTS_TO_ESTIMATE_NORMALS = 6;
+// Jet fitting divides by the square of the extent of a point's neighbors; below this extent it
+// underflows to 0, the least-squares matrix gets NaN, and Eigen 3.4's JacobiSVD, which leaves its
+// rank undefined on non-finite input, reads out of bounds (a crash found by fuzzing).
+constexpr double SMALLEST_NEIGHBORHOOD_EXTENT = 1e-150;
+
 // Jet fitting and MST orientation (CGAL's Point_set_processing_3), in input order.
 inline void estimate_normals(Oriented_point_set& out, unsigned int neighbors)
 {
+  {
+    std::vector<Double_point> points;
+    points.reserve(out.points.size());
+    for(const auto& p : out.points)
+      points.emplace_back(p.x(), p.y(), p.z());
+    const K_neighbor_query query(points);
+    std::vector<Neighbor> found;
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      // the farthest of the `neighbors` nearest other points, as CGAL's query finds them
+      query.query(std::uint32_t(i), neighbors, found);
+      if(found.empty() ||
+         !(found.back().squared_distance >= SMALLEST_NEIGHBORHOOD_EXTENT * SMALLEST_NEIGHBORHOOD_EXTENT))
+        throw Input_error("point " + std::to_string(i) + " and its " + std::to_string(neighbors) +
+                          " nearest points lie within 1e-150 of each other: too close to estimate normals");
+    }
+  }
   typedef std::tuple<Oriented_point_set::Point_3, Oriented_point_set::Vector_3, std::size_t> Item;
   std::vector<Item> items;
   for(std::size_t i = 0; i < out.points.size(); ++i)
@@ -338,12 +417,16 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename, u
   std::error_code ec;
   if(std::filesystem::is_directory(filename, ec))
     throw Input_error("is a folder, not a file");
+  std::uintmax_t file_size = (std::numeric_limits<std::uintmax_t>::max)(); // unknown: no bound
   {
     std::ifstream probe(filename, std::ios::binary | std::ios::ate);
     if(!probe)
       throw Input_error("cannot open the file");
-    if(probe.tellg() == std::streampos(0))
+    const std::streampos end = probe.tellg();
+    if(end == std::streampos(0))
       throw Input_error("the file is empty");
+    if(end > std::streampos(0))
+      file_size = std::uintmax_t(std::streamoff(end));
   }
   if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl" && ext != "xyz" && ext != "pwn")
     throw Input_error("unknown format '" + (ext.empty() ? std::string("(no extension)") : "." + ext) +
@@ -358,6 +441,10 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename, u
     std::vector<std::vector<std::size_t>> polygons;
     std::string reason;
     bool soup_read;
+    if(ext == "off")
+      internal::check_off_header(filename, file_size);
+    else if(ext == "ply")
+      internal::check_ply_header(filename, file_size);
     {
       internal::Captured_cerr captured;
       soup_read = internal::read_soup(filename, ext, points, polygons);
@@ -419,7 +506,7 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename, u
   }
   if(!has_normals)
   {
-    if(out.points.size() < 3)
+    if(out.points.size() < internal::FEWEST_POINTS_TO_ESTIMATE_NORMALS)
       throw Input_error("too few distinct points (" + std::to_string(out.points.size()) + ") to estimate normals");
     internal::estimate_normals(out, (std::min)(estimation_neighbors, unsigned(out.points.size() - 1)));
   }

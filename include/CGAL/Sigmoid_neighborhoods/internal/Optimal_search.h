@@ -35,9 +35,10 @@ constexpr double APPROXIMATION_MARGIN = 1e-5;
 // - pairs whose weights agree on N_i(k) share the exact result of the first of them (the same
 //   inputs through the same code give the same bits);
 // - every triple first gets a cheap approximate error (moments accumulated over k, closed-form
-//   eigenvalues); the exact error (two-pass covariance, iterative eigen solver) is computed only
-//   where the approximation cannot rule out that the triple replaces the best so far. As the best
-//   so far is always exact, the visiting order and the tie rule decide exactly as in the plain loop.
+//   eigenvalues), trusted to +-APPROXIMATION_MARGIN; each comparison of the scan is decided from
+//   these bounds when they decide it, and from exact errors (two-pass covariance, iterative eigen
+//   solver) only where the bounds of the triple and of the best so far overlap. Every comparison
+//   thus has the plain loop's outcome, and so have the visiting order and the tie rule.
 class Optimal_search
 {
 public:
