@@ -16,7 +16,7 @@ CGAL_DATA_ARCHIVE = /usr/share/doc/libcgal-dev/data.tar.gz
 CORPUS_DIR = $(BUILD_DIR)/cgal-data
 TOOL = $(BUILD_DIR)/tools/sigmoid-neighborhoods/sigmoid-neighborhoods
 
-.PHONY: all deps configure build doc test sanitize evaluate corpus clean
+.PHONY: all deps configure build doc test sanitize fuzz evaluate corpus clean
 
 all: build
 
@@ -63,6 +63,25 @@ sanitize: deps
 	  -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
 	cd $(SANITIZE_DIR) && ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -j $(JOBS)
+
+# The libFuzzer target over reading a file and the optimal search (test/fuzz/README.md), built with
+# clang, AddressSanitizer and UndefinedBehaviorSanitizer in its own folder, run for FUZZ_SECONDS on
+# $(FUZZ_DIR)/corpus (the seeds, and what earlier runs added); failing inputs go to $(FUZZ_DIR)/artifacts/.
+# The tool stays configured (the test folder refers to it) but only the fuzzer is built.
+FUZZ_DIR ?= build-fuzz
+FUZZ_SECONDS ?= 600
+fuzz: deps
+	@command -v clang++ > /dev/null || { echo "make fuzz needs clang and libFuzzer (Debian: clang libclang-rt-dev)" >&2; exit 1; }
+	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DSIGMOID_NEIGHBORHOODS_BUILD_FUZZER=ON -DSIGMOID_NEIGHBORHOODS_BUILD_EXAMPLES=OFF \
+	  -DSIGMOID_NEIGHBORHOODS_BUILD_BENCHMARKS=OFF
+	cmake --build $(FUZZ_DIR) --target fuzz_read_and_optimal -j $(JOBS)
+	@mkdir -p $(FUZZ_DIR)/corpus $(FUZZ_DIR)/artifacts $(FUZZ_DIR)/tmp && rm -f $(FUZZ_DIR)/tmp/*
+	cp test/fuzz/seeds/* $(FUZZ_DIR)/corpus/
+	TMPDIR=$(CURDIR)/$(FUZZ_DIR)/tmp \
+	UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:suppressions=$(CURDIR)/test/fuzz/ubsan_suppressions.txt \
+	  $(FUZZ_DIR)/test/fuzz/fuzz_read_and_optimal $(FUZZ_DIR)/corpus -max_total_time=$(FUZZ_SECONDS) \
+	  -max_len=65536 -timeout=10 -rss_limit_mb=4096 -artifact_prefix=$(CURDIR)/$(FUZZ_DIR)/artifacts/ -print_final_stats=1
 
 # The embedded default corpus: the public data of Debian's libcgal-demo.
 corpus: deps

@@ -40,6 +40,7 @@
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -190,25 +191,75 @@ inline void check_header_count(std::uintmax_t count, std::uintmax_t file_size, c
                       std::to_string(file_size) + " bytes can hold");
 }
 
-inline void check_off_header(const std::string& filename, std::uintmax_t file_size)
+// The polygon soup of an OFF file: the loop of CGAL 5.5's `IO::read_OFF()` over CGAL's scanner,
+// less what it does unchecked (found by fuzzing): it resizes to the counts of the header and of each
+// face as they come (bounded here by the file size), and in ASCII it takes colors and texture
+// coordinates at positions of the line that a short line does not have (a heap read out of bounds;
+// they are not used here, so not read: the scanner has read the whole line already).
+inline bool read_off_soup(const std::string& filename, std::uintmax_t file_size,
+                          std::vector<Oriented_point_set::Point_3>& points,
+                          std::vector<std::vector<std::size_t>>& polygons)
 {
-  std::ifstream in(filename);
-  Captured_cerr quiet;
-  CGAL::File_scanner_OFF header(in); // reads the header only, as `read_OFF()` does first
-  if(in.fail())
-    return; // `read_OFF()` fails on it too, with the reason
-  check_header_count(header.size_of_vertices(), file_size, "vertices");
-  check_header_count(header.size_of_facets(), file_size - header.size_of_vertices(), "faces after the vertices");
+  std::ifstream is(filename);
+  CGAL::File_scanner_OFF scanner(is);
+  if(is.fail())
+    return false;
+  const std::size_t vertices = scanner.size_of_vertices(), faces = scanner.size_of_facets();
+  check_header_count(vertices, file_size, "vertices");
+  check_header_count(faces, file_size - vertices, "faces after the vertices");
+  points.resize(vertices);
+  polygons.resize(faces);
+  for(std::size_t i = 0; i < vertices; ++i)
+  {
+    double x = 0., y = 0., z = 0., w = 1.;
+    scanner.scan_vertex(x, y, z, w);
+    points[i] = Oriented_point_set::Point_3(x / w, y / w, z / w); // w = 0: non-finite, refused later
+    if(scanner.binary() && scanner.has_normals())
+    {
+      double nx, ny, nz;
+      scanner.scan_normal(nx, ny, nz);
+    }
+    if(scanner.binary() && scanner.has_textures())
+    {
+      double u, v, t;
+      scanner.scan_texture(u, v, t);
+    }
+    if(!is.good())
+      return false;
+  }
+  for(std::size_t i = 0; i < faces; ++i)
+  {
+    std::size_t corners = std::size_t(-1);
+    scanner.scan_facet(corners, i);
+    if((!is.eof() && !is.good()) || corners == std::size_t(-1))
+      return false;
+    check_header_count(corners, file_size, "corners of face " + std::to_string(i));
+    polygons[i].resize(corners);
+    for(std::size_t j = 0; j < corners; ++j)
+    {
+      std::size_t id = 0;
+      scanner.scan_facet_vertex_index(id, j + 1, i);
+      if(!is || id >= vertices)
+        return false;
+      polygons[i][j] = id;
+    }
+  }
+  return !is.fail();
 }
 
-// Besides the counts: CGAL 5.5's PLY reader adds a `property` line to the last `element` read so
-// far, and before any `element` line it takes the back() of an empty vector (undefined behavior,
-// a crash; found by fuzzing). The first two lines are the signature and the format, checked by CGAL.
+// Besides the counts, header contents that CGAL 5.5's PLY reader does not check (crashes, found by
+// fuzzing): a `property` line before any `element` line (it takes the back() of an empty vector),
+// and vertex properties of another type than it reads them as (it dereferences a failed
+// dynamic_cast): `x y z` as float or double, and, in a point set (no faces), which CGAL reads all as
+// float when one of `x y z` is float, `nx ny nz` as float then; a point set also looks its other
+// properties up by name, cut at a NUL byte, so vertex property names must be distinct and without NUL.
+// The first two lines are the signature and the format, which CGAL checks.
 inline void check_ply_header(const std::string& filename, std::uintmax_t file_size)
 {
   std::ifstream in(filename, std::ios::binary);
-  std::string line;
-  bool has_element = false;
+  std::string line, element;
+  std::vector<std::pair<std::string, std::string>> vertex_properties; // (name, type)
+  bool has_faces = false, float_point = false;
   for(std::size_t line_number = 1; std::getline(in, line); ++line_number)
   {
     std::istringstream tokens(line);
@@ -216,26 +267,59 @@ inline void check_ply_header(const std::string& filename, std::uintmax_t file_si
     if(line_number <= 2 || !(tokens >> keyword))
       continue;
     if(keyword == "end_header")
-      return;
+      break;
     if(keyword == "element")
     {
-      has_element = true;
-      std::string name;
       std::size_t items = 0; // read as CGAL reads it
-      if(tokens >> name >> items)
-        check_header_count(items, file_size, "items of element '" + name + "'");
+      if(tokens >> element >> items)
+        check_header_count(items, file_size, "items of element '" + element + "'");
+      has_faces = has_faces || ((element == "face" || element == "faces") && items > 0);
     }
-    else if(keyword == "property" && !has_element)
-      throw Input_error("cannot parse the file as ply (a property before any element, line " +
-                        std::to_string(line_number) + ")");
+    else if(keyword == "property")
+    {
+      if(element.empty())
+        throw Input_error("cannot parse the file as ply (a property before any element, line " +
+                          std::to_string(line_number) + ")");
+      std::string type, name;
+      if((element == "vertex" || element == "vertices") && tokens >> type >> name)
+      {
+        if(type == "list" && !(tokens >> name >> name))
+          continue; // `list SIZE_TYPE INDEX_TYPE NAME`; CGAL refuses the line
+        bool repeated = name.find('\0') != std::string::npos;
+        for(const auto& property : vertex_properties)
+          repeated = repeated || property.first == name;
+        if(repeated)
+          throw Input_error("cannot parse the file as ply (vertex property '" + name.substr(0, name.find('\0')) +
+                            "' given twice or with a NUL byte, line " + std::to_string(line_number) + ")");
+        vertex_properties.emplace_back(name, type);
+      }
+    }
+  }
+  auto is_float = [](const std::string& type) { return type == "float" || type == "float32"; };
+  for(const auto& property : vertex_properties)
+    if(property.first == "x" || property.first == "y" || property.first == "z")
+      float_point = float_point || is_float(property.second);
+  for(const auto& property : vertex_properties)
+  {
+    const std::string& name = property.first;
+    const bool is_point = (name == "x" || name == "y" || name == "z");
+    if(!is_point && (has_faces || (name != "nx" && name != "ny" && name != "nz")))
+      continue;
+    const bool as_read = float_point && !has_faces ? is_float(property.second)
+                                                   : is_float(property.second) || property.second == "double" ||
+                                                       property.second == "float64";
+    if(!as_read)
+      throw Input_error("cannot parse the file as ply (vertex property '" + name + "' of type '" + property.second +
+                        "': coordinates and normals must be float or double" +
+                        (float_point && !has_faces ? ", all float when a coordinate is" : "") + ")");
   }
 }
 
-inline bool read_soup(const std::string& filename, const std::string& ext,
+inline bool read_soup(const std::string& filename, const std::string& ext, std::uintmax_t file_size,
                       std::vector<Oriented_point_set::Point_3>& points,
                       std::vector<std::vector<std::size_t>>& polygons)
 {
-  if(ext == "off") return CGAL::IO::read_OFF(filename, points, polygons);
+  if(ext == "off") return read_off_soup(filename, file_size, points, polygons);
   if(ext == "obj") return CGAL::IO::read_OBJ(filename, points, polygons);
   if(ext == "ply") return CGAL::IO::read_PLY(filename, points, polygons);
   if(ext == "stl") return CGAL::IO::read_STL(filename, points, polygons);
@@ -441,13 +525,11 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename, u
     std::vector<std::vector<std::size_t>> polygons;
     std::string reason;
     bool soup_read;
-    if(ext == "off")
-      internal::check_off_header(filename, file_size);
-    else if(ext == "ply")
+    if(ext == "ply")
       internal::check_ply_header(filename, file_size);
     {
       internal::Captured_cerr captured;
-      soup_read = internal::read_soup(filename, ext, points, polygons);
+      soup_read = internal::read_soup(filename, ext, file_size, points, polygons);
       reason = captured.first_line();
     }
     if(!reason.empty())
