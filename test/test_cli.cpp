@@ -337,4 +337,7 @@ TEST_CASE("CLI: the bad-input corpus gives the expected exit code and message", 
   CHECK(folder.exit_code == 2);
   CHECK(folder.err.find("is a folder") != std::string::npos);
   CHECK(run("optimal '" + dir + "/missing.off' -o " + path("missing.csv")).exit_code == 2);
+  // jet fitting needs 6 points: fewer estimation neighbors is a caller's error, not the file's
+  CHECK_THROWS_AS(SN::read_oriented_point_set(dir + "/two_raw_points.xyz", 3), std::invalid_argument);
+  CHECK_THROWS_AS(SN::read_oriented_point_set(dir + "/two_raw_points.xyz", 6), SN::Input_error);
 }

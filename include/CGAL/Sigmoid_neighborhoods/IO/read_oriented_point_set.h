@@ -485,7 +485,8 @@ inline void estimate_normals(Oriented_point_set& out, unsigned int neighbors)
   \param filename the file; its extension (any case) selects the format: `.off`, `.obj`, `.ply`,
   `.stl`, `.xyz` or `.pwn`
   \param estimation_neighbors the number of neighbors of the normal estimation and orientation of
-  point sets without normals; 0 leaves them without normals
+  point sets without normals, 0 or at least 6 (jet fitting of degree 2 needs 6 points; smaller
+  values throw `std::invalid_argument`); 0 leaves them without normals
   \return the points, their normals, and counts of merged, dropped and unoriented points
 
   \throws Input_error with a one-line message on anything unusable: a missing, unreadable or empty
@@ -496,6 +497,9 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename, u
 {
   typedef Oriented_point_set::Point_3 Point_3;
   typedef Oriented_point_set::Vector_3 Vector_3;
+  if(estimation_neighbors != 0 && estimation_neighbors < internal::FEWEST_POINTS_TO_ESTIMATE_NORMALS)
+    throw std::invalid_argument("read_oriented_point_set: estimation_neighbors must be 0 or at least " +
+                                std::to_string(internal::FEWEST_POINTS_TO_ESTIMATE_NORMALS));
   Oriented_point_set out;
   const std::string ext = internal::lower_extension(filename);
   std::error_code ec;
