@@ -44,15 +44,6 @@ struct Neighbor_lists
 // The points within a distance of a point, by index, with CGAL's kd-tree and Fuzzy_sphere.
 class Ball_neighbor_query
 {
-  struct Index_to_point_map
-  {
-    typedef std::uint32_t key_type;
-    typedef Double_point value_type;
-    typedef const Double_point& reference;
-    typedef boost::readable_property_map_tag category;
-    const std::vector<Double_point>* points = nullptr;
-    friend reference get(const Index_to_point_map& map, key_type i) { return (*map.points)[i]; }
-  };
   typedef CGAL::Search_traits_3<Double_kernel> Base_traits;
   typedef CGAL::Search_traits_adapter<std::uint32_t, Index_to_point_map, Base_traits> Traits;
   typedef CGAL::Kd_tree<Traits> Tree;

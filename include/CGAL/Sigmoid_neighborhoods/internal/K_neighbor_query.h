@@ -13,6 +13,7 @@
 #include <CGAL/Kd_tree.h>
 
 #include <boost/iterator/counting_iterator.hpp>
+#include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <cstdint>
@@ -32,19 +33,21 @@ struct Neighbor
   double squared_distance;
 };
 
+// The point of an index, for CGAL's kd-trees over indices (Search_traits_adapter).
+struct Index_to_point_map
+{
+  typedef std::uint32_t key_type;
+  typedef Double_point value_type;
+  typedef const Double_point& reference;
+  typedef boost::readable_property_map_tag category;
+  const std::vector<Double_point>* points = nullptr;
+  friend reference get(const Index_to_point_map& map, key_type i) { return (*map.points)[i]; }
+};
+
 // k nearest neighbors by index with CGAL's kd-tree, ordered by distance and then by index,
 // so that the neighborhoods do not depend on the tree's traversal (SPEC §2).
 class K_neighbor_query
 {
-  struct Index_to_point_map
-  {
-    typedef std::uint32_t key_type;
-    typedef Double_point value_type;
-    typedef const Double_point& reference;
-    typedef boost::readable_property_map_tag category;
-    const std::vector<Double_point>* points = nullptr;
-    friend reference get(const Index_to_point_map& map, key_type i) { return (*map.points)[i]; }
-  };
   typedef CGAL::Search_traits_3<Double_kernel> Base_traits;
   typedef CGAL::Search_traits_adapter<std::uint32_t, Index_to_point_map, Base_traits> Traits;
   typedef CGAL::Orthogonal_k_neighbor_search<Traits> Base_search;
