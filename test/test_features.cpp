@@ -6,10 +6,14 @@
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
 #include <CGAL/Sigmoid_neighborhoods/weighted_covariance.h>
 #include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Symmetric_eigenvalues_3.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <catch2/catch.hpp>
 
+#include <Eigen/Geometry>
+
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -275,4 +279,57 @@ TEST_CASE("degenerate cases of SPEC 4 with both barycenters", "[features][degene
     CHECK(SN::weighted_covariance(p, std::vector<double>{1., 1., 1e-13}).is_degenerate());
     CHECK_FALSE(SN::weighted_covariance(p, std::vector<double>{1., 1., 1e-11}).is_degenerate());
   }
+}
+
+// The optimal search's approximations use the fast closed form; SPEC 4 trusts an approximation of
+// E_dim only to 1e-5, so the eigenvalues must be as accurate as Eigen's own closed form.
+TEST_CASE("fast 3x3 eigenvalues agree with the iterative solver", "[features][eigenvalues]")
+{
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> unit(0., 1.);
+  std::normal_distribution<double> normal;
+  double worst_separated = 0., worst_any = 0.;
+  int separated = 0;
+  for(int trial = 0; trial < 200000; ++trial)
+  {
+    // eigenvalues of every shape: linear, planar, near-double, triple, rank 1 and 2, and any scale
+    std::array<double, 3> wanted{{unit(rng), unit(rng), unit(rng)}};
+    switch(trial % 6)
+    {
+      case 0: wanted[1] = wanted[2] = 0.; break;                              // rank 1
+      case 1: wanted[2] = 0.; break;                                          // rank 2
+      case 2: wanted[1] = wanted[0] * (1. - std::pow(10., -12. * unit(rng))); break; // near-double
+      case 3: wanted[2] = wanted[1] * (1. - std::pow(10., -12. * unit(rng))); break;
+      case 4: wanted[1] = wanted[2] = wanted[0]; break;                        // triple
+      default: break;
+    }
+    const double scale = std::pow(10., 200. * unit(rng) - 100.);
+    const Eigen::Matrix3d rotation =
+      Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng)).normalized().toRotationMatrix();
+    const Eigen::Matrix3d c =
+      rotation * Eigen::Vector3d(wanted[0], wanted[1], wanted[2]).asDiagonal() * rotation.transpose() * scale;
+    const std::array<double, 3> fast = SN::internal::symmetric_eigenvalues_3(c);
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(c, Eigen::EigenvaluesOnly);
+    const Eigen::Vector3d& ev = solver.eigenvalues();
+    const double trace = c.trace();
+    REQUIRE(fast[0] >= fast[1]);
+    REQUIRE(fast[1] >= fast[2]);
+    double error = 0.;
+    for(int i = 0; i < 3; ++i)
+      error = (std::max)(error, std::abs(fast[i] - ev[2 - i]) / trace);
+    worst_any = (std::max)(worst_any, error);
+    // the extreme eigenvalues at least 1e-3 of the trace from the middle one: the closed form is exact to rounding
+    if(ev[2] - ev[1] > 1e-3 * trace && ev[1] - ev[0] > 1e-3 * trace)
+    {
+      ++separated;
+      worst_separated = (std::max)(worst_separated, error);
+    }
+  }
+  CHECK(separated > 20000);
+  CHECK(worst_separated < 1e-13);
+  CHECK(worst_any < 1e-7); // nearly coincident eigenvalues: what every closed form loses (SPEC 4)
+  // a zero matrix
+  const std::array<double, 3> zero = SN::internal::symmetric_eigenvalues_3(Eigen::Matrix3d::Zero());
+  CHECK(zero[0] == 0.);
+  CHECK(zero[2] == 0.);
 }

@@ -9,11 +9,11 @@
 #include <CGAL/Sigmoid_neighborhoods/Optimal_sigmoid_neighborhood.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Local_neighborhood.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Symmetric_eigenvalues_3.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
-#include <Eigen/Eigenvalues>
-
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -221,7 +221,6 @@ private:
     double s0 = 0., sx = 0., sy = 0., sz = 0., sxx = 0., syx = 0., szx = 0., syy = 0., szy = 0., szz = 0.;
     double ux = 0., uy = 0., uz = 0.; // plain sums, for the unweighted barycenter
     bool others = false;              // a neighbor other than the point itself has weight
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
     for(unsigned int j = 0; j <= k_max; ++j)
     {
       const Eigen::Vector3d& q = local.offset(j);
@@ -280,9 +279,8 @@ private:
         out = std::numeric_limits<double>::quiet_NaN();
         continue;
       }
-      solver.computeDirect(c, Eigen::EigenvaluesOnly);
-      const Eigen::Vector3d& ev = solver.eigenvalues();
-      const double l1 = ev[2], l2 = ev[1], l3 = ev[0];
+      const std::array<double, 3> ev = symmetric_eigenvalues_3(c);
+      const double l1 = ev[0], l2 = ev[1], l3 = ev[2];
       if(!(l1 > 0.) || (l1 - l3) < 1e-3 * l1)
       {
         out = std::numeric_limits<double>::quiet_NaN();
