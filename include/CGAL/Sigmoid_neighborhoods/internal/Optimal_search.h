@@ -12,6 +12,8 @@
 #include <CGAL/Sigmoid_neighborhoods/internal/Symmetric_eigenvalues_3.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
+#include <Eigen/Core>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -27,7 +29,7 @@ constexpr double TIE_TOLERANCE = 1e-12;
 
 namespace internal {
 
-// An approximation of E_dim is trusted to this absolute accuracy (see approximate_errors()).
+// An approximation of E_dim is trusted to this absolute accuracy (see approximate_shares()).
 constexpr double APPROXIMATION_MARGIN = 1e-5;
 
 // The search of SPEC §5 at every point: one k_max query per point, every (a, b, k) of the grid
@@ -47,7 +49,9 @@ public:
     std::vector<Neighbor> neighbors;
     Local_neighborhood local;
     std::vector<double> weights; // pair-major, k_max + 1 per pair
-    std::vector<double> approx;  // pair-major, one per k; NaN: not trusted
+    std::vector<double> approx;  // pair-major, one per k; NaN: not trusted, NOT_EVALUATED: see shares
+    std::vector<std::array<double, 3>> shares; // pair-major, one per k: approximate (L, P, S)
+    std::vector<Eigen::Matrix3d> matrices;     // one per k: the covariances of one pair
     std::vector<double> exact;   // pair-major, one per k; NaN: not computed yet
     std::vector<std::size_t> shared, source; // per pair: prefix shared with an earlier pair
   };
@@ -65,6 +69,8 @@ public:
     Scratch s;
     s.weights.resize(m_sigmoids.size() * (m_settings.k_max + 1));
     s.approx.resize(m_sigmoids.size() * m_settings.number_of_sizes());
+    s.shares.resize(m_sigmoids.size() * m_settings.number_of_sizes());
+    s.matrices.resize(m_settings.number_of_sizes());
     s.exact.resize(m_sigmoids.size() * m_settings.number_of_sizes());
     s.shared.resize(m_sigmoids.size());
     s.source.resize(m_sigmoids.size());
@@ -102,9 +108,7 @@ public:
         }
       }
       if(s.shared[p] < m)
-        approximate_errors(s.local, w, s.shared[p], &s.approx[p * sizes]);
-      for(unsigned int k = k_min; std::size_t(k) + 1 <= s.shared[p] && k <= k_max; ++k)
-        s.approx[p * sizes + (k - k_min)] = s.approx[s.source[p] * sizes + (k - k_min)];
+        approximate_shares(s, w, s.shared[p], p * sizes);
     }
 
     // The scan of SPEC §5, exact wherever it matters. A triple whose weights on N_i(k) repeat an
@@ -162,13 +166,38 @@ private:
     double low = std::numeric_limits<double>::infinity(), high = std::numeric_limits<double>::infinity();
     std::size_t pair = 0;
     unsigned int k = 0; // 0: none yet
+    // Shares (L, P, S) whose sum of squares is at most this cannot improve on [low, high]: Shannon's
+    // entropy is at least Renyi's of order 2, E >= -ln(L^2 + P^2 + S^2), so such a triple would be
+    // dismissed by the first test of visit() anyway; the logarithms of E are not needed for it.
+    double hopeless_squares = 0.;
+
+    void set(double new_low, double new_high)
+    {
+      low = new_low;
+      high = new_high;
+      // E~ - M >= high - tol follows from -ln(squares) >= high - tol + M (+ 1e-12 for rounding)
+      hopeless_squares = std::exp(-(high - TIE_TOLERANCE + APPROXIMATION_MARGIN + 1e-12));
+    }
   };
+
+  static constexpr double NOT_EVALUATED = -1.;
 
   double exact_value(Scratch& s, Running_minimum& best) const
   {
     if(best.low != best.high)
-      best.low = best.high = exact_error(s, best.pair, best.k);
+    {
+      const double exact = exact_error(s, best.pair, best.k);
+      best.set(exact, exact);
+    }
     return best.low;
+  }
+
+  // The pair whose slots hold the results of (p, k): the earliest one with the same weights on N_i(k).
+  std::size_t owner(const Scratch& s, std::size_t p, unsigned int k) const
+  {
+    while(s.source[p] != p && std::size_t(k) + 1 <= s.shared[p])
+      p = s.source[p];
+    return p;
   }
 
   // One step of the plain loop, `if(E < best - TIE_TOLERANCE) best = E`, decided from the
@@ -177,7 +206,15 @@ private:
   // exact errors otherwise. The outcome is the plain loop's, with far fewer exact solves.
   void visit(Scratch& s, std::size_t p, unsigned int k, Running_minimum& best) const
   {
-    const double approx = s.approx[p * m_settings.number_of_sizes() + (k - m_settings.k_min)];
+    const std::size_t slot = owner(s, p, k) * m_settings.number_of_sizes() + (k - m_settings.k_min);
+    double& approx = s.approx[slot];
+    if(approx == NOT_EVALUATED)
+    {
+      const std::array<double, 3>& x = s.shares[slot];
+      if(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] <= best.hopeless_squares)
+        return;
+      approx = dimensionality_error(x[0], x[1], x[2]);
+    }
     double low = approx - APPROXIMATION_MARGIN, high = approx + APPROXIMATION_MARGIN;
     if(std::isnan(approx)) // not trusted
       low = high = exact_error(s, p, k);
@@ -191,8 +228,7 @@ private:
       if(!(low < exact_value(s, best) - TIE_TOLERANCE))
         return;
     }
-    best.low = low;
-    best.high = high;
+    best.set(low, high);
     best.pair = p;
     best.k = k;
   }
@@ -200,23 +236,28 @@ private:
   // The exact error of (pair p, k), computed once for all pairs that share the weights of N_i(k).
   double exact_error(Scratch& s, std::size_t p, unsigned int k) const
   {
-    while(s.source[p] != p && std::size_t(k) + 1 <= s.shared[p])
-      p = s.source[p];
+    p = owner(s, p, k);
     double& slot = s.exact[p * m_settings.number_of_sizes() + (k - m_settings.k_min)];
     if(std::isnan(slot))
       slot = s.local.features(&s.weights[p * (m_settings.k_max + 1)], k, m_settings.barycenter).error;
     return slot;
   }
 
-  // Approximate E_dim for every k, from moments accumulated over the neighbors (one pass) and
-  // Eigen's closed-form eigenvalues. NaN where the approximation may be off by more than
-  // APPROXIMATION_MARGIN: close to the degenerate threshold, where the moments cancel, or where
-  // the eigenvalues nearly coincide (closed forms lose up to 1e-8 lambda1 there, which moves E by
-  // at most about 1e-6; the margin keeps a factor 10 above that).
+  // Approximate (L, P, S) for every k, from moments accumulated over the neighbors (one pass) and
+  // closed-form eigenvalues; E_dim itself is evaluated by visit() only where a comparison needs it.
+  // The approximation is marked NaN where it may be off by more than APPROXIMATION_MARGIN: close to
+  // the degenerate threshold, where the moments cancel, or where the eigenvalues nearly coincide
+  // (closed forms lose up to 1e-8 lambda1 there, which moves E by at most about 1e-6; the margin
+  // keeps a factor 10 above that).
   // Sizes k with k + 1 <= shared are left alone: an earlier pair with the same weights has them.
-  void approximate_errors(const Local_neighborhood& local, const double* w, std::size_t shared, double* approx) const
+  // The eigenvalues are solved in a loop of their own: independent of each other, their divisions
+  // and square roots overlap in the processor.
+  void approximate_shares(Scratch& s, const double* w, std::size_t shared, std::size_t first_slot) const
   {
+    const Local_neighborhood& local = s.local;
     const unsigned int k_min = m_settings.k_min, k_max = m_settings.k_max;
+    const unsigned int k_first = (std::max)(k_min, unsigned(shared));
+    double* approx = &s.approx[first_slot];
     const bool weighted = m_settings.barycenter == Barycenter::WEIGHTED;
     double s0 = 0., sx = 0., sy = 0., sz = 0., sxx = 0., syx = 0., szx = 0., syy = 0., szy = 0., szz = 0.;
     double ux = 0., uy = 0., uz = 0.; // plain sums, for the unweighted barycenter
@@ -242,9 +283,10 @@ private:
         szy += wj * q[2] * q[1];
         szz += wj * q[2] * q[2];
       }
-      if(j < k_min || std::size_t(j) + 1 <= shared)
+      if(j < k_first)
         continue;
       double& out = approx[j - k_min];
+      Eigen::Matrix3d& c = s.matrices[j - k_min];
       if(weighted && !others)
       {
         out = std::numeric_limits<double>::infinity(); // the point alone: C = 0 exactly, degenerate
@@ -264,14 +306,9 @@ private:
         cy = uy / double(j + 1);
         cz = uz / double(j + 1);
       }
-      Eigen::Matrix3d c;
-      c(0, 0) = sxx - 2. * cx * sx + s0 * cx * cx;
-      c(1, 0) = syx - cy * sx - cx * sy + s0 * cy * cx;
-      c(2, 0) = szx - cz * sx - cx * sz + s0 * cz * cx;
-      c(1, 1) = syy - 2. * cy * sy + s0 * cy * cy;
-      c(2, 1) = szy - cz * sy - cy * sz + s0 * cz * cy;
-      c(2, 2) = szz - 2. * cz * sz + s0 * cz * cz;
-      const double trace = c(0, 0) + c(1, 1) + c(2, 2);
+      const double c00 = sxx - 2. * cx * sx + s0 * cx * cx, c11 = syy - 2. * cy * sy + s0 * cy * cy,
+                   c22 = szz - 2. * cz * sz + s0 * cz * cz;
+      const double trace = c00 + c11 + c22;
       // the size of the terms that cancelled: the rounding error of C is about 1e-16 of it
       const double cancelled = sxx + syy + szz + s0 * (cx * cx + cy * cy + cz * cz);
       if(!(trace > 1e-6 * s0 * local.squared_radius(j)) || !(trace > 1e-6 * cancelled))
@@ -279,14 +316,26 @@ private:
         out = std::numeric_limits<double>::quiet_NaN();
         continue;
       }
-      const std::array<double, 3> ev = symmetric_eigenvalues_3(c);
-      const double l1 = ev[0], l2 = ev[1], l3 = ev[2];
+      out = NOT_EVALUATED;
+      c(0, 0) = c00;
+      c(1, 0) = syx - cy * sx - cx * sy + s0 * cy * cx;
+      c(2, 0) = szx - cz * sx - cx * sz + s0 * cz * cx;
+      c(1, 1) = c11;
+      c(2, 1) = szy - cz * sy - cy * sz + s0 * cz * cy;
+      c(2, 2) = c22;
+    }
+    for(unsigned int k = k_first; k <= k_max; ++k)
+    {
+      if(approx[k - k_min] != NOT_EVALUATED)
+        continue;
+      const std::array<double, 3> ev = symmetric_eigenvalues_3(s.matrices[k - k_min]);
+      const double l1 = ev[0], l2 = (std::max)(ev[1], 0.), l3 = (std::max)(ev[2], 0.);
       if(!(l1 > 0.) || (l1 - l3) < 1e-3 * l1)
       {
-        out = std::numeric_limits<double>::quiet_NaN();
+        approx[k - k_min] = std::numeric_limits<double>::quiet_NaN();
         continue;
       }
-      out = dimensionality_features_from_eigenvalues(l1, l2, l3).error;
+      s.shares[first_slot + (k - k_min)] = {{(l1 - l2) / l1, (l2 - l3) / l1, l3 / l1}};
     }
   }
 
