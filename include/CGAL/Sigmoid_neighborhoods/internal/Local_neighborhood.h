@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -79,6 +80,7 @@ public:
     m_offsets[0].setZero();
     m_angles[0] = 0.;
     m_squared_radius[0] = 0.;
+    m_largest_angle = 0.;
     const Double_point& p = input.points[i];
     const Eigen::Vector3d& n = input.normals[i];
     for(std::size_t j = 1; j < m; ++j)
@@ -87,6 +89,7 @@ public:
       const Double_point& q = input.points[index];
       m_offsets[j] = Eigen::Vector3d(q.x() - p.x(), q.y() - p.y(), q.z() - p.z());
       m_angles[j] = normal_angle(n, input.normals[index]);
+      m_largest_angle = (std::max)(m_largest_angle, m_angles[j]);
       m_squared_radius[j] = (std::max)(m_squared_radius[j - 1], m_offsets[j].squaredNorm());
     }
   }
@@ -95,11 +98,18 @@ public:
   const Eigen::Vector3d& offset(std::size_t j) const { return m_offsets[j]; }
   double squared_radius(unsigned int k) const { return m_squared_radius[k]; }
 
-  // w_ij for all j in N_i(k_max); w_ii = sig(0) = 1.
-  void weights(const Cosine_sigmoid& sigmoid, double* w) const
+  // w_ij for all j in N_i(k_max); w_ii = sig(0) = 1. Returns true when all weights are 1 because
+  // every angle is below a (or within the tolerance): on smooth surfaces, most pairs of the grid.
+  bool weights(const Cosine_sigmoid& sigmoid, double* w) const
   {
+    if(m_largest_angle <= sigmoid.angle_tolerance() || m_largest_angle < sigmoid.a())
+    {
+      std::fill(w, w + m_angles.size(), 1.); // what sigmoid(x) gives for every x <= m_largest_angle
+      return true;
+    }
     for(std::size_t j = 0; j < m_angles.size(); ++j)
       w[j] = sigmoid(m_angles[j]);
+    return false;
   }
 
   Weighted_covariance covariance(const double* w, unsigned int k, Barycenter barycenter) const
@@ -119,6 +129,7 @@ private:
   std::vector<Eigen::Vector3d> m_offsets;
   std::vector<double> m_angles;
   std::vector<double> m_squared_radius;
+  double m_largest_angle = 0.;
 };
 
 } // namespace internal

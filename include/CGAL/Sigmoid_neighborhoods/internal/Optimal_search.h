@@ -86,13 +86,22 @@ public:
     s.local.assign(m_input, i, s.neighbors);
     std::fill(s.exact.begin(), s.exact.end(), not_yet);
 
+    const std::size_t none = pairs;
+    std::size_t first_all_ones = none; // the first pair with all weights 1 not repeating an earlier one
     for(std::size_t p = 0; p < pairs; ++p)
     {
       double* w = &s.weights[p * m];
-      s.local.weights(m_sigmoids[p], w);
+      const bool all_ones = s.local.weights(m_sigmoids[p], w);
       // The earlier pair sharing the longest prefix of weights with this one.
       s.shared[p] = 0;
       s.source[p] = p;
+      if(all_ones && first_all_ones != none)
+      {
+        // what the search below finds, without comparing
+        s.shared[p] = m;
+        s.source[p] = first_all_ones;
+        continue;
+      }
       for(std::size_t q = 0; q < p && s.shared[p] < m; ++q)
       {
         if(s.shared[q] == m)
@@ -107,6 +116,8 @@ public:
           s.source[p] = q;
         }
       }
+      if(all_ones)
+        first_all_ones = s.shared[p] < m ? p : s.source[p];
       if(s.shared[p] < m)
         approximate_shares(s, w, s.shared[p], p * sizes);
     }
