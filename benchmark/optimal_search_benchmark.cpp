@@ -9,11 +9,14 @@
 //
 //   optimal_search_benchmark [--points N] [--threads T] [--data sphere|fandisk|scan|all]
 //                            [--fandisk FILE] [--scan FILE] [--skip-plain] [--repeat R]
+//                            [--order hilbert|random]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Classification/Local_eigen_analysis.h>
 #include <CGAL/Classification/Point_set_neighborhood.h>
 #include <CGAL/Random.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
@@ -55,12 +58,13 @@ struct Data
   std::string name;
   std::vector<Point_3> points;
   std::vector<Vector_3> normals;
+  std::string order = "as read";
 };
 
 // Uniform random points on the unit sphere, normals pointing out.
 Data sampled_sphere(std::size_t n)
 {
-  Data d{"sphere", {}, {}};
+  Data d{"sphere", {}, {}, "random"};
   std::mt19937_64 rng(1);
   std::normal_distribution<double> g;
   for(std::size_t i = 0; i < n; ++i)
@@ -93,7 +97,7 @@ Data upsampled_fandisk(const std::string& file, std::size_t n)
   std::mt19937_64 rng(2);
   std::discrete_distribution<std::size_t> pick(area.begin(), area.end());
   std::uniform_real_distribution<double> u(0., 1.);
-  Data d{"fandisk", {}, {}};
+  Data d{"fandisk", {}, {}, "random"};
   for(std::size_t i = 0; i < n; ++i)
   {
     auto h = mesh.halfedge(faces[pick(rng)]);
@@ -115,6 +119,28 @@ Data upsampled_fandisk(const std::string& file, std::size_t n)
     d.normals.push_back(nn / std::sqrt(nn.squared_length()));
   }
   return d;
+}
+
+// The points in Hilbert order, as a scan or a mesh gives them: neighbors in space are mostly
+// neighbors in memory. Generated samples are otherwise in random order, where every query and every
+// neighbor is a cache miss once the points outgrow the cache.
+void put_in_hilbert_order(Data& d)
+{
+  std::vector<std::size_t> order(d.points.size());
+  for(std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  const auto point_map = CGAL::make_property_map(static_cast<const std::vector<Point_3>&>(d.points));
+  CGAL::hilbert_sort(order.begin(), order.end(),
+                     CGAL::Spatial_sort_traits_adapter_3<Kernel, decltype(point_map)>(point_map));
+  Data sorted{d.name, {}, {}, "Hilbert"};
+  sorted.points.reserve(order.size());
+  sorted.normals.reserve(order.size());
+  for(std::size_t i : order)
+  {
+    sorted.points.push_back(d.points[i]);
+    sorted.normals.push_back(d.normals[i]);
+  }
+  d = std::move(sorted);
 }
 
 Data scan(const std::string& file)
@@ -305,7 +331,7 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
       std::printf("  (b) and (c) differ on %.0f points\n", check.value);
   }
   auto rate = [n](const Measure& m) { return m.seconds > 0 ? double(n) / m.seconds : 0.; };
-  std::printf("%s, %zu points, %d threads\n", data.name.c_str(), n, threads);
+  std::printf("%s, %zu points (%s order), %d threads\n", data.name.c_str(), n, data.order.c_str(), threads);
   std::printf("  (a) CGAL Local_eigen_analysis k=20: %10.0f points/s (%.2f s, sequential)\n", rate(a), a.seconds);
   if(with_plain)
     std::printf("  (b) plain loop, 420 triples:       %10.0f points/s (%.2f s)\n", rate(b), b.seconds);
@@ -332,6 +358,7 @@ int main(int argc, char** argv)
   std::string which = "all", fandisk = SN_BENCHMARK_FANDISK, scan_file;
   bool with_plain = true;
   int repeat = 1;
+  bool hilbert = true;
   for(int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -352,13 +379,20 @@ int main(int argc, char** argv)
       scan_file = next();
     else if(arg == "--skip-plain")
       with_plain = false;
+    else if(arg == "--order")
+    {
+      const std::string order = next();
+      if(order != "hilbert" && order != "random")
+        throw std::runtime_error("--order takes hilbert or random");
+      hilbert = order == "hilbert";
+    }
     else if(arg == "--repeat")
       repeat = (std::max)(1, std::stoi(next()));
     else
     {
       std::cerr << "usage: " << argv[0]
                 << " [--points N] [--threads T] [--data sphere|fandisk|scan|all] [--fandisk FILE] [--scan FILE]"
-                   " [--skip-plain] [--repeat R]\n";
+                   " [--skip-plain] [--repeat R] [--order hilbert|random]\n";
       return 2;
     }
   }
@@ -379,6 +413,9 @@ int main(int argc, char** argv)
       data.push_back(sampled_sphere(n));
     if((which == "fandisk" || which == "all") && std::filesystem::exists(fandisk))
       data.push_back(upsampled_fandisk(fandisk, n));
+    for(Data& d : data)
+      if(hilbert)
+        put_in_hilbert_order(d);
     for(const Data& d : data)
       for(int t : threads)
         run(d, t, with_plain, repeat);

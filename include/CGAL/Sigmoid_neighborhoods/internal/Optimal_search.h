@@ -52,7 +52,8 @@ public:
     std::vector<double> approx;  // pair-major, one per k; NaN: not trusted, NOT_EVALUATED: see shares
     std::vector<std::array<double, 3>> shares; // pair-major, one per k: approximate (L, P, S)
     std::vector<Eigen::Matrix3d> matrices;     // one per k: the covariances of one pair
-    std::vector<double> exact;   // pair-major, one per k; NaN: not computed yet
+    std::vector<Dimensionality_features> exact; // pair-major, one per k, where `computed` says so
+    std::vector<unsigned char> computed;
     std::vector<std::size_t> shared, source; // per pair: prefix shared with an earlier pair
   };
 
@@ -72,6 +73,7 @@ public:
     s.shares.resize(m_sigmoids.size() * m_settings.number_of_sizes());
     s.matrices.resize(m_settings.number_of_sizes());
     s.exact.resize(m_sigmoids.size() * m_settings.number_of_sizes());
+    s.computed.resize(m_sigmoids.size() * m_settings.number_of_sizes());
     s.shared.resize(m_sigmoids.size());
     s.source.resize(m_sigmoids.size());
     return s;
@@ -81,10 +83,9 @@ public:
   {
     const unsigned int k_min = m_settings.k_min, k_max = m_settings.k_max;
     const std::size_t m = k_max + 1, sizes = m_settings.number_of_sizes(), pairs = m_sigmoids.size();
-    const double not_yet = std::numeric_limits<double>::quiet_NaN();
     m_query.query(i, k_max, s.neighbors);
     s.local.assign(m_input, i, s.neighbors);
-    std::fill(s.exact.begin(), s.exact.end(), not_yet);
+    std::fill(s.computed.begin(), s.computed.end(), 0);
 
     const std::size_t none = pairs;
     std::size_t first_all_ones = none; // the first pair with all weights 1 not repeating an earlier one
@@ -136,7 +137,7 @@ public:
       result.a = m_sigmoids[best.pair].a();
       result.b = m_sigmoids[best.pair].b();
       result.k = best.k;
-      result.features = s.local.features(&s.weights[best.pair * m], best.k, m_settings.barycenter);
+      result.features = exact_features(s, best.pair, best.k);
     }
 
     // Equal weights, best k with the same tie rule.
@@ -244,15 +245,21 @@ private:
     best.k = k;
   }
 
-  // The exact error of (pair p, k), computed once for all pairs that share the weights of N_i(k).
-  double exact_error(Scratch& s, std::size_t p, unsigned int k) const
+  // The exact features of (pair p, k), computed once for all pairs that share the weights of
+  // N_i(k): the same inputs through the same code give the same bits.
+  const Dimensionality_features& exact_features(Scratch& s, std::size_t p, unsigned int k) const
   {
     p = owner(s, p, k);
-    double& slot = s.exact[p * m_settings.number_of_sizes() + (k - m_settings.k_min)];
-    if(std::isnan(slot))
-      slot = s.local.features(&s.weights[p * (m_settings.k_max + 1)], k, m_settings.barycenter).error;
-    return slot;
+    const std::size_t slot = p * m_settings.number_of_sizes() + (k - m_settings.k_min);
+    if(!s.computed[slot])
+    {
+      s.exact[slot] = s.local.features(&s.weights[p * (m_settings.k_max + 1)], k, m_settings.barycenter);
+      s.computed[slot] = 1;
+    }
+    return s.exact[slot];
   }
+
+  double exact_error(Scratch& s, std::size_t p, unsigned int k) const { return exact_features(s, p, k).error; }
 
   // Approximate (L, P, S) for every k, from moments accumulated over the neighbors (one pass) and
   // closed-form eigenvalues; E_dim itself is evaluated by visit() only where a comparison needs it.
