@@ -303,7 +303,7 @@ TEST_CASE("fast 3x3 eigenvalues agree with the iterative solver", "[features][ei
       case 4: wanted[1] = wanted[2] = wanted[0]; break;                        // triple
       default: break;
     }
-    const double scale = std::pow(10., 200. * unit(rng) - 100.);
+    const double scale = std::pow(10., 400. * unit(rng) - 200.); // both sides of the rescaling at 1e+-90
     const Eigen::Matrix3d rotation =
       Eigen::Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng)).normalized().toRotationMatrix();
     const Eigen::Matrix3d c =
@@ -318,7 +318,7 @@ TEST_CASE("fast 3x3 eigenvalues agree with the iterative solver", "[features][ei
     for(int i = 0; i < 3; ++i)
       error = (std::max)(error, std::abs(fast[i] - ev[2 - i]) / trace);
     worst_any = (std::max)(worst_any, error);
-    // the extreme eigenvalues at least 1e-3 of the trace from the middle one: the closed form is exact to rounding
+    // eigenvalues at least 1e-3 of the trace apart: the closed form is exact to rounding
     if(ev[2] - ev[1] > 1e-3 * trace && ev[1] - ev[0] > 1e-3 * trace)
     {
       ++separated;
@@ -326,7 +326,7 @@ TEST_CASE("fast 3x3 eigenvalues agree with the iterative solver", "[features][ei
     }
   }
   CHECK(separated > 20000);
-  CHECK(worst_separated < 1e-13);
+  CHECK(worst_separated < 1e-12); // SPEC 4's accuracy of the iterative solver
   CHECK(worst_any < 1e-7); // nearly coincident eigenvalues: what every closed form loses (SPEC 4)
   // a zero matrix
   const std::array<double, 3> zero = SN::internal::symmetric_eigenvalues_3(Eigen::Matrix3d::Zero());

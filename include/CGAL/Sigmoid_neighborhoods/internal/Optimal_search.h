@@ -353,7 +353,8 @@ private:
         approx[k - k_min] = std::numeric_limits<double>::quiet_NaN();
         continue;
       }
-      s.shares[first_slot + (k - k_min)] = {{(l1 - l2) / l1, (l2 - l3) / l1, l3 / l1}};
+      const double inverse = 1. / l1;
+      s.shares[first_slot + (k - k_min)] = {{(l1 - l2) * inverse, (l2 - l3) * inverse, l3 * inverse}};
     }
   }
 
