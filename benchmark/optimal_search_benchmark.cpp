@@ -27,6 +27,7 @@
 
 #include <boost/iterator/function_output_iterator.hpp>
 
+#include <malloc.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -219,6 +220,14 @@ Measure measure(const std::function<double()>& work)
   if(child == 0)
   {
     ::close(pipe_fd[0]);
+    // A forked child inherits its parent's peak memory (reading a file can exceed the search):
+    // memory freed earlier goes back to the system, and the peak is reset to the current size.
+    ::malloc_trim(0);
+    if(FILE* f = std::fopen("/proc/self/clear_refs", "w"))
+    {
+      std::fputs("5", f);
+      std::fclose(f);
+    }
     const double before = double(current_rss_bytes());
     CGAL::Real_timer t;
     t.start();

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -40,6 +41,10 @@ template <typename PointRange, typename PointMap, typename NormalMap>
 Oriented_points copy_oriented_points(const PointRange& range, PointMap point_map, NormalMap normal_map)
 {
   Oriented_points result;
+  // reserved: growing by doubling would hold up to 1.5 copies at once
+  const auto size = std::distance(std::begin(range), std::end(range));
+  result.points.reserve(std::size_t(size));
+  result.normals.reserve(std::size_t(size));
   std::size_t i = 0;
   for(const auto& item : range)
   {

@@ -8,6 +8,10 @@
 
 #include <CGAL/tags.h>
 
+#if defined(_OPENMP)
+#include <omp.h>
+#endif
+
 #include <cstddef>
 #include <cstdint>
 #include <algorithm>
@@ -43,7 +47,7 @@ void for_each_index(std::size_t n, const MakeScratch& make_scratch, const Body& 
 #pragma omp parallel
     {
       auto scratch = make_scratch();
-#pragma omp for schedule(dynamic, 64)
+#pragma omp for schedule(dynamic, 16)
       for(std::int64_t i = 0; i < count; ++i)
         body(static_cast<std::size_t>(i), scratch);
     }
@@ -62,7 +66,14 @@ template <typename ConcurrencyTag, typename Result, typename MakeScratch, typena
 void for_each_index_in_blocks(std::size_t n, const MakeScratch& make_scratch, const Compute& compute,
                               const Sink& sink)
 {
-  constexpr std::size_t BLOCK = 1 << 14;
+  // 2048 points per thread: enough that the last chunks of a block keep few threads waiting, few
+  // enough that a block of results stays small next to the input.
+  std::size_t threads = 1;
+#if defined(_OPENMP)
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+    threads = static_cast<std::size_t>(omp_get_max_threads());
+#endif
+  const std::size_t BLOCK = 2048 * (std::max)(threads, std::size_t(2));
   std::vector<Result> results;
   for(std::size_t start = 0; start < n; start += BLOCK)
   {
