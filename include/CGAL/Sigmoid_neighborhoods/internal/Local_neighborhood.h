@@ -41,7 +41,7 @@ template <typename PointRange, typename PointMap, typename NormalMap>
 Oriented_points copy_oriented_points(const PointRange& range, PointMap point_map, NormalMap normal_map)
 {
   Oriented_points result;
-  // reserved: growing by doubling would hold up to 1.5 copies at once
+  // reserved: growing by doubling would hold the old and the new buffer at once
   const auto size = std::distance(std::begin(range), std::end(range));
   result.points.reserve(std::size_t(size));
   result.normals.reserve(std::size_t(size));
