@@ -192,6 +192,54 @@ TEST_CASE("k nearest neighbors are ordered by distance, ties by index", "[neighb
     }
 }
 
+// The optimal search takes the weights of a pair whose a exceeds every angle of the neighborhood
+// as all ones without evaluating the sigmoid; that must be what the sigmoid gives, bit for bit.
+TEST_CASE("all-ones weights are recognised exactly where the sigmoid gives 1 everywhere", "[optimal][sigmoid]")
+{
+  const Point_list points = folded_sheet(12, 3);
+  const SN::internal::Oriented_points input =
+    SN::internal::copy_oriented_points(points, Point_map(), Normal_map());
+  const SN::internal::K_neighbor_query query(input.points);
+  std::vector<SN::internal::Neighbor> neighbors;
+  SN::internal::Local_neighborhood local;
+  const double pi = SN::internal::PI;
+  std::size_t all_ones = 0, evaluated = 0;
+  for(std::uint32_t i = 0; i < input.size(); i += 5)
+  {
+    query.query(i, 20, neighbors);
+    local.assign(input, i, neighbors);
+    double largest = 0.;
+    std::vector<double> angles(1, 0.);
+    for(const auto& n : neighbors)
+    {
+      angles.push_back(SN::normal_angle(input.normals[i], input.normals[n.index]));
+      largest = (std::max)(largest, angles.back());
+    }
+    // a just below, at and above the largest angle, and the tolerance on both sides of it
+    for(double a : {0., largest * (1. - 1e-12), largest, std::nextafter(largest, 4.), pi / 6, pi})
+      for(double tolerance : {0., largest, 1e-6})
+      {
+        if(a > pi || tolerance >= pi)
+          continue;
+        const SN::Cosine_sigmoid sigmoid(a, (std::max)(a, pi / 2), tolerance);
+        std::vector<double> w(angles.size());
+        const bool ones = local.weights(sigmoid, w.data());
+        bool every_one = true;
+        for(std::size_t j = 0; j < angles.size(); ++j)
+        {
+          const double expected = sigmoid(angles[j]);
+          CHECK(std::memcmp(&w[j], &expected, sizeof(double)) == 0);
+          every_one = every_one && expected == 1.;
+        }
+        if(ones)
+          CHECK(every_one);
+        ones ? ++all_ones : ++evaluated;
+      }
+  }
+  CHECK(all_ones > 0);
+  CHECK(evaluated > 0);
+}
+
 TEST_CASE("optimal search equals the plain loop over all 420 triples", "[optimal]")
 {
   const Point_list points = folded_sheet(15, 1);
