@@ -55,6 +55,7 @@ public:
     std::vector<Dimensionality_features> exact; // pair-major, one per k, where `computed` says so
     std::vector<unsigned char> computed;
     std::vector<std::size_t> shared, source; // per pair: prefix shared with an earlier pair
+    std::size_t first_all_ones = 0; // the first pair with all weights 1 not repeating an earlier one
   };
 
   Optimal_search(const Oriented_points& input, const Search_settings& settings)
@@ -82,54 +83,30 @@ public:
   Optimal_sigmoid_neighborhood operator()(std::uint32_t i, Scratch& s) const
   {
     const unsigned int k_min = m_settings.k_min, k_max = m_settings.k_max;
-    const std::size_t m = k_max + 1, sizes = m_settings.number_of_sizes(), pairs = m_sigmoids.size();
+    const std::size_t pairs = m_sigmoids.size();
     m_query.query(i, k_max, s.neighbors);
     s.local.assign(m_input, i, s.neighbors);
     std::fill(s.computed.begin(), s.computed.end(), 0);
+    s.first_all_ones = pairs;
 
-    const std::size_t none = pairs;
-    std::size_t first_all_ones = none; // the first pair with all weights 1 not repeating an earlier one
-    for(std::size_t p = 0; p < pairs; ++p)
-    {
-      double* w = &s.weights[p * m];
-      const bool all_ones = s.local.weights(m_sigmoids[p], w);
-      // The earlier pair sharing the longest prefix of weights with this one.
-      s.shared[p] = 0;
-      s.source[p] = p;
-      if(all_ones && first_all_ones != none)
-      {
-        // what the search below finds, without comparing
-        s.shared[p] = m;
-        s.source[p] = first_all_ones;
-        continue;
-      }
-      for(std::size_t q = 0; q < p && s.shared[p] < m; ++q)
-      {
-        if(s.shared[q] == m)
-          continue; // q repeats an earlier pair entirely: that one is compared instead
-        const double* v = &s.weights[q * m];
-        std::size_t l = 0;
-        while(l < m && v[l] == w[l])
-          ++l;
-        if(l > s.shared[p])
-        {
-          s.shared[p] = l;
-          s.source[p] = q;
-        }
-      }
-      if(all_ones)
-        first_all_ones = s.shared[p] < m ? p : s.source[p];
-      if(s.shared[p] < m)
-        approximate_shares(s, w, s.shared[p], p * sizes);
-    }
-
-    // The scan of SPEC §5, exact wherever it matters. A triple whose weights on N_i(k) repeat an
-    // earlier pair's has that triple's error E, already visited: best <= E + tol since, so it
-    // cannot improve, and is skipped.
+    // The scan of SPEC §5, exact wherever it matters, one pair at a time. Skipped triples:
+    // - those whose weights on N_i(k) repeat an earlier pair's: that triple, with the same error E,
+    //   was visited, so best <= E + tol since, and the triple cannot improve;
+    // - with the weighted barycenter, (p, k) where the k-th neighbor has weight 0: its covariance
+    //   is (p, k - 1)'s bit for bit (zero weights are skipped), so its error is (p, k - 1)'s, or
+    //   +inf where the larger radius makes it degenerate; neither can improve once (p, k - 1) is visited;
+    // - every triple once the best error is at most tol: no error, being >= 0, can be below best - tol.
     Running_minimum best;
-    for(std::size_t p = 0; p < pairs; ++p)
+    std::size_t prepared = 0; // pairs [0, prepared) have their weights, shares and approximations
+    for(; prepared < pairs && best.high > TIE_TOLERANCE; ++prepared)
+    {
+      const std::size_t p = prepared;
+      prepare(s, p, p);
+      const double* w = &s.weights[p * (k_max + 1)];
       for(unsigned int k = (std::max)(k_min, unsigned(std::min<std::size_t>(s.shared[p], k_max + 1))); k <= k_max; ++k)
-        visit(s, p, k, best);
+        if(!repeats_smaller_size(w, k))
+          visit(s, p, k, best);
+    }
 
     Optimal_sigmoid_neighborhood result;
     if(best.k != 0)
@@ -143,6 +120,8 @@ public:
     // Equal weights, best k with the same tie rule.
     if(m_equal_pair >= 0)
     {
+      if(std::size_t(m_equal_pair) >= prepared)
+        prepare(s, std::size_t(m_equal_pair), prepared);
       Running_minimum equal;
       for(unsigned int k = k_min; k <= k_max; ++k)
         visit(s, std::size_t(m_equal_pair), k, equal);
@@ -154,7 +133,7 @@ public:
     }
     else
     {
-      const std::vector<double> ones(m, 1.);
+      const std::vector<double> ones(k_max + 1, 1.);
       for(unsigned int k = k_min; k <= k_max; ++k)
       {
         const double error = s.local.features(ones.data(), k, m_settings.barycenter).error;
@@ -194,6 +173,48 @@ private:
 
   static constexpr double NOT_EVALUATED = -1.;
 
+  // Weights of pair p, the earlier pair among [0, candidates) sharing the longest prefix of weights
+  // with it, and approximations for the sizes it does not share.
+  void prepare(Scratch& s, std::size_t p, std::size_t candidates) const
+  {
+    const std::size_t m = m_settings.k_max + 1, none = m_sigmoids.size();
+    double* w = &s.weights[p * m];
+    const bool all_ones = s.local.weights(m_sigmoids[p], w);
+    s.shared[p] = 0;
+    s.source[p] = p;
+    if(all_ones && s.first_all_ones != none)
+    {
+      // what the search below finds, without comparing
+      s.shared[p] = m;
+      s.source[p] = s.first_all_ones;
+      return;
+    }
+    for(std::size_t q = 0; q < candidates && s.shared[p] < m; ++q)
+    {
+      if(s.shared[q] == m)
+        continue; // q repeats an earlier pair entirely: that one is compared instead
+      const double* v = &s.weights[q * m];
+      std::size_t l = 0;
+      while(l < m && v[l] == w[l])
+        ++l;
+      if(l > s.shared[p])
+      {
+        s.shared[p] = l;
+        s.source[p] = q;
+      }
+    }
+    if(all_ones)
+      s.first_all_ones = s.shared[p] < m ? p : s.source[p];
+    if(s.shared[p] < m)
+      approximate_shares(s, w, s.shared[p], p * m_settings.number_of_sizes());
+  }
+
+  // (p, k) with a zero weight on the k-th neighbor repeats (p, k - 1) (see operator()).
+  bool repeats_smaller_size(const double* w, unsigned int k) const
+  {
+    return m_settings.barycenter == Barycenter::WEIGHTED && k > m_settings.k_min && w[k] == 0.;
+  }
+
   double exact_value(Scratch& s, Running_minimum& best) const
   {
     if(best.low != best.high)
@@ -227,7 +248,8 @@ private:
         return;
       approx = dimensionality_error(x[0], x[1], x[2]);
     }
-    double low = approx - APPROXIMATION_MARGIN, high = approx + APPROXIMATION_MARGIN;
+    // E >= 0: every entropy term is -x ln x with x in [0, 1]
+    double low = (std::max)(approx - APPROXIMATION_MARGIN, 0.), high = approx + APPROXIMATION_MARGIN;
     if(std::isnan(approx)) // not trusted
       low = high = exact_error(s, p, k);
     if(low >= best.high - TIE_TOLERANCE)
@@ -267,7 +289,8 @@ private:
   // the degenerate threshold, where the moments cancel, or where the eigenvalues nearly coincide
   // (closed forms lose up to 1e-8 lambda1 there, which moves E by at most about 1e-6; the margin
   // keeps a factor 10 above that).
-  // Sizes k with k + 1 <= shared are left alone: an earlier pair with the same weights has them.
+  // Sizes k with k + 1 <= shared are left alone: an earlier pair with the same weights has them;
+  // so are the sizes that repeat a smaller one.
   // The eigenvalues are solved in a loop of their own: independent of each other, their divisions
   // and square roots overlap in the processor.
   void approximate_shares(Scratch& s, const double* w, std::size_t shared, std::size_t first_slot) const
@@ -304,6 +327,11 @@ private:
       if(j < k_first)
         continue;
       double& out = approx[j - k_min];
+      if(repeats_smaller_size(w, j))
+      {
+        out = std::numeric_limits<double>::quiet_NaN(); // never visited; exact if it were
+        continue;
+      }
       Eigen::Matrix3d& c = s.matrices[j - k_min];
       if(weighted && !others)
       {
