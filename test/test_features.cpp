@@ -288,7 +288,7 @@ TEST_CASE("fast 3x3 eigenvalues agree with the iterative solver", "[features][ei
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> unit(0., 1.);
   std::normal_distribution<double> normal;
-  double worst_separated = 0., worst_any = 0.;
+  double worst_separated = 0., worst_any = 0., worst_over_bound = 0.;
   int separated = 0;
   for(int trial = 0; trial < 200000; ++trial)
   {
@@ -318,6 +318,10 @@ TEST_CASE("fast 3x3 eigenvalues agree with the iterative solver", "[features][ei
     for(int i = 0; i < 3; ++i)
       error = (std::max)(error, std::abs(fast[i] - ev[2 - i]) / trace);
     worst_any = (std::max)(worst_any, error);
+    // the error bound that the optimal search's margins rest on, with a factor 8 to spare
+    const double relative_gap = (std::min)(fast[0] - fast[1], fast[1] - fast[2]) / fast[0];
+    worst_over_bound = (std::max)(
+      worst_over_bound, error * trace / (fast[0] * SN::internal::closed_form_relative_error(relative_gap)));
     // eigenvalues at least 1e-3 of the trace apart: the closed form is exact to rounding
     if(ev[2] - ev[1] > 1e-3 * trace && ev[1] - ev[0] > 1e-3 * trace)
     {
@@ -328,6 +332,7 @@ TEST_CASE("fast 3x3 eigenvalues agree with the iterative solver", "[features][ei
   CHECK(separated > 20000);
   CHECK(worst_separated < 1e-12); // SPEC 4's accuracy of the iterative solver
   CHECK(worst_any < 1e-7); // nearly coincident eigenvalues: what every closed form loses (SPEC 4)
+  CHECK(worst_over_bound < 1. / 8.);
   // a zero matrix
   const std::array<double, 3> zero = SN::internal::symmetric_eigenvalues_3(Eigen::Matrix3d::Zero());
   CHECK(zero[0] == 0.);

@@ -97,11 +97,27 @@ public:
       m_largest_angle = (std::max)(m_largest_angle, m_angles[j]);
       m_squared_radius[j] = (std::max)(m_squared_radius[j - 1], m_offsets[j].squaredNorm());
     }
+    // Scaled by a power of 2 (exactly) to a largest radius in [1, 2): covariances at that scale
+    // keep their cubes far from overflow and underflow.
+    const double largest = m_squared_radius[m - 1];
+    const double scale = largest > 0. ? std::ldexp(1., -std::ilogb(std::sqrt(largest))) : 1.;
+    m_unit_scale = scale;
+    m_unit_offsets.resize(m);
+    m_unit_squared_radius.resize(m);
+    for(std::size_t j = 0; j < m; ++j)
+    {
+      m_unit_offsets[j] = m_offsets[j] * scale;
+      m_unit_squared_radius[j] = m_squared_radius[j] * (scale * scale);
+    }
   }
 
   std::size_t size() const { return m_offsets.size(); }
   const Eigen::Vector3d& offset(std::size_t j) const { return m_offsets[j]; }
   double squared_radius(unsigned int k) const { return m_squared_radius[k]; }
+  // the offsets and squared radii scaled so that the largest radius lies in [1, 2)
+  const Eigen::Vector3d& unit_offset(std::size_t j) const { return m_unit_offsets[j]; }
+  double unit_squared_radius(unsigned int k) const { return m_unit_squared_radius[k]; }
+  double unit_scale() const { return m_unit_scale; } // unit offset / offset, a power of 2
 
   // w_ij for all j in N_i(k_max); w_ii = sig(0) = 1. Returns true when all weights are 1 because
   // every angle is below a (or within the tolerance): on smooth surfaces, most pairs of the grid.
@@ -134,6 +150,9 @@ private:
   std::vector<Eigen::Vector3d> m_offsets;
   std::vector<double> m_angles;
   std::vector<double> m_squared_radius;
+  std::vector<Eigen::Vector3d> m_unit_offsets;
+  std::vector<double> m_unit_squared_radius;
+  double m_unit_scale = 1.;
   double m_largest_angle = 0.;
 };
 

@@ -14,6 +14,7 @@
 
 #include <Eigen/Core>
 
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -29,15 +30,16 @@ constexpr double TIE_TOLERANCE = 1e-12;
 
 namespace internal {
 
-// An approximation of E_dim is trusted to this absolute accuracy (see approximate_shares()).
-constexpr double APPROXIMATION_MARGIN = 1e-5;
+// An approximation of E_dim is within its own margin of the exact value (see approximation_margin()),
+// at most this one.
+constexpr double LARGEST_APPROXIMATION_MARGIN = 1e-4;
 
 // The search of SPEC §5 at every point: one k_max query per point, every (a, b, k) of the grid
 // evaluated from it, with the result of the plain loop bit for bit. Two things save time:
 // - pairs whose weights agree on N_i(k) share the exact result of the first of them (the same
 //   inputs through the same code give the same bits);
 // - every triple first gets a cheap approximate error (moments accumulated over k, closed-form
-//   eigenvalues), trusted to +-APPROXIMATION_MARGIN; each comparison of the scan is decided from
+//   eigenvalues) and a margin within which it is exact; each comparison of the scan is decided from
 //   these bounds when they decide it, and from exact errors (two-pass covariance, iterative eigen
 //   solver) only where the bounds of the triple and of the best so far overlap. Every comparison
 //   thus has the plain loop's outcome, and so have the visiting order and the tie rule.
@@ -50,10 +52,11 @@ public:
     Local_neighborhood local;
     std::vector<double> weights; // pair-major, k_max + 1 per pair
     std::vector<double> approx;  // pair-major, one per k; NaN: not trusted, NOT_EVALUATED: see shares
-    std::vector<std::array<double, 3>> shares; // pair-major, one per k: approximate (L, P, S)
-    std::vector<Eigen::Matrix3d> matrices;     // one per k: the covariances of one pair
+    std::vector<double> margins; // pair-major, one per k: of approx, once it is evaluated
+    std::vector<std::array<double, 4>> shares; // pair-major, one per k: approximate (L, P, S), noise
     std::vector<Dimensionality_features> exact; // pair-major, one per k, where `computed` says so
     std::vector<unsigned char> computed;
+    std::vector<double> columns;              // see approximate_shares()
     std::vector<std::size_t> shared, source; // per pair: prefix shared with an earlier pair
     std::size_t first_all_ones = 0; // the first pair with all weights 1 not repeating an earlier one
   };
@@ -72,9 +75,10 @@ public:
     s.weights.resize(m_sigmoids.size() * (m_settings.k_max + 1));
     s.approx.resize(m_sigmoids.size() * m_settings.number_of_sizes());
     s.shares.resize(m_sigmoids.size() * m_settings.number_of_sizes());
-    s.matrices.resize(m_settings.number_of_sizes());
+    s.margins.resize(m_sigmoids.size() * m_settings.number_of_sizes());
     s.exact.resize(m_sigmoids.size() * m_settings.number_of_sizes());
     s.computed.resize(m_sigmoids.size() * m_settings.number_of_sizes());
+    s.columns.resize(NUMBER_OF_COLUMNS * column_stride());
     s.shared.resize(m_sigmoids.size());
     s.source.resize(m_sigmoids.size());
     return s;
@@ -167,7 +171,7 @@ private:
       low = new_low;
       high = new_high;
       // E~ - M >= high - tol follows from -ln(squares) >= high - tol + M (+ 1e-12 for rounding)
-      hopeless_squares = std::exp(-(high - TIE_TOLERANCE + APPROXIMATION_MARGIN + 1e-12));
+      hopeless_squares = std::exp(-(high - TIE_TOLERANCE + LARGEST_APPROXIMATION_MARGIN + 1e-12));
     }
   };
 
@@ -215,6 +219,18 @@ private:
     return m_settings.barycenter == Barycenter::WEIGHTED && k > m_settings.k_min && w[k] == 0.;
   }
 
+  // The margin of an approximate E whose eigenvalues are within noise * lambda1 of the exact path's:
+  // each share moves by at most delta = 3 noise (a difference of two eigenvalues over lambda1, and
+  // lambda1's own error), and -x ln x by at most delta (1 + ln(1 / delta)) (its modulus of
+  // continuity on [0, 1] is -delta ln delta), plus 1e-12 for the rounding of E itself. Noise is at
+  // most 2.01e-7 (2e-7 from the closed form, 3e-10 at the largest cancellation trusted), so the
+  // margin is at most 2.8e-5, below LARGEST_APPROXIMATION_MARGIN.
+  static double approximation_margin(double noise)
+  {
+    const double delta = 3. * noise;
+    return 3. * delta * (1. - std::log(delta)) + 1e-12;
+  }
+
   double exact_value(Scratch& s, Running_minimum& best) const
   {
     if(best.low != best.high)
@@ -234,7 +250,7 @@ private:
   }
 
   // One step of the plain loop, `if(E < best - TIE_TOLERANCE) best = E`, decided from the
-  // approximation's bounds [approx - M, approx + M] whenever they decide it (rounding of
+  // approximation's bounds [approx - margin, approx + margin] whenever they decide it (rounding of
   // `x - TIE_TOLERANCE` is monotone in x, so bounds on both sides bound the comparison), and from
   // exact errors otherwise. The outcome is the plain loop's, with far fewer exact solves.
   void visit(Scratch& s, std::size_t p, unsigned int k, Running_minimum& best) const
@@ -243,13 +259,15 @@ private:
     double& approx = s.approx[slot];
     if(approx == NOT_EVALUATED)
     {
-      const std::array<double, 3>& x = s.shares[slot];
+      const std::array<double, 4>& x = s.shares[slot];
       if(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] <= best.hopeless_squares)
         return;
       approx = dimensionality_error(x[0], x[1], x[2]);
+      s.margins[slot] = approximation_margin(x[3]);
     }
     // E >= 0: every entropy term is -x ln x with x in [0, 1]
-    double low = (std::max)(approx - APPROXIMATION_MARGIN, 0.), high = approx + APPROXIMATION_MARGIN;
+    const double margin = s.margins[slot];
+    double low = (std::max)(approx - margin, 0.), high = approx + margin;
     if(std::isnan(approx)) // not trusted
       low = high = exact_error(s, p, k);
     if(low >= best.high - TIE_TOLERANCE)
@@ -284,105 +302,165 @@ private:
   double exact_error(Scratch& s, std::size_t p, unsigned int k) const { return exact_features(s, p, k).error; }
 
   // Approximate (L, P, S) for every k, from moments accumulated over the neighbors (one pass) and
-  // closed-form eigenvalues; E_dim itself is evaluated by visit() only where a comparison needs it.
-  // The approximation is marked NaN where it may be off by more than APPROXIMATION_MARGIN: close to
-  // the degenerate threshold, where the moments cancel, or where the eigenvalues nearly coincide
-  // (closed forms lose up to 1e-8 lambda1 there, which moves E by at most about 1e-6; the margin
-  // keeps a factor 10 above that).
+  // closed-form eigenvalues, with the noise from which visit() derives the margin of E_dim; E_dim
+  // itself is evaluated only where a comparison needs it. The approximation is marked NaN (not
+  // trusted: the exact path decides) close to the degenerate threshold, where the moments cancel
+  // (by more than a factor 1000), near the extremes of the floating-point range, and where all
+  // three eigenvalues nearly coincide.
   // Sizes k with k + 1 <= shared are left alone: an earlier pair with the same weights has them;
   // so are the sizes that repeat a smaller one.
-  // The eigenvalues are solved in a loop of their own: independent of each other, their divisions
-  // and square roots overlap in the processor.
+  // The prefix sums are taken in one pass; everything after them is independent from one k to the
+  // next, solved in batches that Eigen vectorizes.
   void approximate_shares(Scratch& s, const double* w, std::size_t shared, std::size_t first_slot) const
   {
     const Local_neighborhood& local = s.local;
     const unsigned int k_min = m_settings.k_min, k_max = m_settings.k_max;
     const unsigned int k_first = (std::max)(k_min, unsigned(shared));
-    double* approx = &s.approx[first_slot];
+    const std::size_t sizes = m_settings.number_of_sizes();
     const bool weighted = m_settings.barycenter == Barycenter::WEIGHTED;
-    double s0 = 0., sx = 0., sy = 0., sz = 0., sxx = 0., syx = 0., szx = 0., syy = 0., szy = 0., szz = 0.;
-    double ux = 0., uy = 0., uz = 0.; // plain sums, for the unweighted barycenter
-    bool others = false;              // a neighbor other than the point itself has weight
-    for(unsigned int j = 0; j <= k_max; ++j)
+    double* approx = &s.approx[first_slot];
+    std::array<double, 4>* shares = &s.shares[first_slot];
+    double* margins = &s.margins[first_slot];
+
+    // Per k: sums of w, w q and w q q^T over N_i(k), and the barycenter when it is unweighted, in
+    // the unit offsets q: at that scale the closed form neither overflows nor underflows.
+    const std::size_t stride = column_stride();
+    double* const columns = s.columns.data();
+    auto column = [&](Column i) { return columns + i * stride; };
     {
-      const Eigen::Vector3d& q = local.offset(j);
-      ux += q[0];
-      uy += q[1];
-      uz += q[2];
-      const double wj = w[j];
-      if(wj != 0.)
+      double t0 = 0., tx = 0., ty = 0., tz = 0., txx = 0., tyx = 0., tzx = 0., tyy = 0., tzy = 0., tzz = 0.;
+      double vx = 0., vy = 0., vz = 0.;
+      for(unsigned int j = 0; j <= k_max; ++j)
       {
-        others = others || j > 0;
-        s0 += wj;
-        sx += wj * q[0];
-        sy += wj * q[1];
-        sz += wj * q[2];
-        sxx += wj * q[0] * q[0];
-        syx += wj * q[1] * q[0];
-        szx += wj * q[2] * q[0];
-        syy += wj * q[1] * q[1];
-        szy += wj * q[2] * q[1];
-        szz += wj * q[2] * q[2];
+        const Eigen::Vector3d& q = local.unit_offset(j);
+        vx += q[0];
+        vy += q[1];
+        vz += q[2];
+        const double wj = w[j];
+        if(wj != 0.)
+        {
+          t0 += wj;
+          tx += wj * q[0];
+          ty += wj * q[1];
+          tz += wj * q[2];
+          txx += wj * q[0] * q[0];
+          tyx += wj * q[1] * q[0];
+          tzx += wj * q[2] * q[0];
+          tyy += wj * q[1] * q[1];
+          tzy += wj * q[2] * q[1];
+          tzz += wj * q[2] * q[2];
+        }
+        if(j < k_first)
+          continue;
+        const std::size_t c = j - k_min;
+        column(S0)[c] = t0;
+        column(SX)[c] = tx;
+        column(SY)[c] = ty;
+        column(SZ)[c] = tz;
+        column(SXX)[c] = txx;
+        column(SYX)[c] = tyx;
+        column(SZX)[c] = tzx;
+        column(SYY)[c] = tyy;
+        column(SZY)[c] = tzy;
+        column(SZZ)[c] = tzz;
+        const double inverse_size = 1. / double(j + 1);
+        column(UX)[c] = vx * inverse_size;
+        column(UY)[c] = vy * inverse_size;
+        column(UZ)[c] = vz * inverse_size;
+        column(RADIUS)[c] = local.unit_squared_radius(j);
       }
-      if(j < k_first)
-        continue;
-      double& out = approx[j - k_min];
-      if(repeats_smaller_size(w, j))
-      {
-        out = std::numeric_limits<double>::quiet_NaN(); // never visited; exact if it were
-        continue;
-      }
-      Eigen::Matrix3d& c = s.matrices[j - k_min];
+    }
+
+    if(weighted)
+      approximate_eigenvalues<true>(columns, stride, k_first - k_min, sizes);
+    else
+      approximate_eigenvalues<false>(columns, stride, k_first - k_min, sizes);
+
+    // Below this, the exact path's covariance, at the input's scale, nears the subnormal numbers
+    // and loses the accuracy that the margins assume.
+    const double smallest_trace = 1e-280 * local.unit_scale() * local.unit_scale();
+    bool others = false; // a neighbor other than the point itself has weight
+    for(unsigned int k = 1; k < k_first; ++k)
+      others = others || w[k] != 0.;
+    for(unsigned int k = k_first; k <= k_max; ++k)
+    {
+      others = others || w[k] != 0.;
+      const std::size_t c = k - k_min;
+      const double l1 = column(L1)[c], l2 = column(L2)[c], l3 = column(L3)[c];
       if(weighted && !others)
       {
-        out = std::numeric_limits<double>::infinity(); // the point alone: C = 0 exactly, degenerate
-        continue;
+        approx[c] = std::numeric_limits<double>::infinity(); // the point alone: C = 0 exactly, degenerate
+        margins[c] = 0.;
       }
-      // C = S2 - c S1^T - S1 c^T + S0 c c^T, with c the barycenter
-      double cx, cy, cz;
-      if(weighted)
+      else if(repeats_smaller_size(w, k))
+        approx[c] = std::numeric_limits<double>::quiet_NaN(); // never visited; exact if it were
+      else if(!(column(TRACE_MARGIN)[c] > 0.) || !(column(TRACE)[c] > smallest_trace) ||
+              !has_unscaled_eigenvalues(column(TRACE)[c]) || !(l1 > 0.) || l1 - l3 < 1e-3 * l1)
+        approx[c] = std::numeric_limits<double>::quiet_NaN(); // not trusted
+      else
       {
-        cx = sx / s0;
-        cy = sy / s0;
-        cz = sz / s0;
+        approx[c] = NOT_EVALUATED;
+        const double inverse = 1. / l1;
+        shares[c] = {{(l1 - l2) * inverse, (l2 - l3) * inverse, l3 * inverse, column(NOISE)[c]}};
+      }
+    }
+  }
+
+  // Columns of approximate_shares(), each of stride column_stride().
+  enum Column { S0, SX, SY, SZ, SXX, SYX, SZX, SYY, SZY, SZZ, UX, UY, UZ, RADIUS, // prefix sums and radii
+                L1, L2, L3, TRACE, TRACE_MARGIN, NOISE, NUMBER_OF_COLUMNS };           // results
+  typedef Eigen::Array<double, 8, 1> Batch; // k per batch: an AVX-512 register, or several narrower ones
+
+  std::size_t column_stride() const { return m_settings.number_of_sizes() + Batch::SizeAtCompileTime; }
+
+  // The second half of approximate_shares(): columns [first, sizes) of the prefix sums to
+  // eigenvalues, in batches of Batch::SizeAtCompileTime sizes k that Eigen vectorizes (the last
+  // batch reads and writes past `sizes`, within the stride, where nothing is used).
+  template <bool Weighted>
+  static void approximate_eigenvalues(double* columns, std::size_t stride, std::size_t first, std::size_t sizes)
+  {
+    for(std::size_t c = first; c < sizes; c += Batch::SizeAtCompileTime)
+    {
+      auto column = [&](Column i) { return Eigen::Map<Batch>(columns + i * stride + c); };
+      const Batch s0 = column(S0), sx = column(SX), sy = column(SY), sz = column(SZ);
+      // C = S2 - c S1^T - S1 c^T + S0 c c^T, with c the barycenter
+      Batch cx, cy, cz;
+      if(Weighted)
+      {
+        const Batch inverse_weight = s0.inverse(); // s0 >= w_ii = 1
+        cx = sx * inverse_weight;
+        cy = sy * inverse_weight;
+        cz = sz * inverse_weight;
       }
       else
       {
-        cx = ux / double(j + 1);
-        cy = uy / double(j + 1);
-        cz = uz / double(j + 1);
+        cx = column(UX);
+        cy = column(UY);
+        cz = column(UZ);
       }
-      const double c00 = sxx - 2. * cx * sx + s0 * cx * cx, c11 = syy - 2. * cy * sy + s0 * cy * cy,
-                   c22 = szz - 2. * cz * sz + s0 * cz * cz;
-      const double trace = c00 + c11 + c22;
+      const Batch c00 = column(SXX) - 2. * cx * sx + s0 * cx * cx;
+      const Batch c11 = column(SYY) - 2. * cy * sy + s0 * cy * cy;
+      const Batch c22 = column(SZZ) - 2. * cz * sz + s0 * cz * cz;
+      const Batch c10 = column(SYX) - cy * sx - cx * sy + s0 * cy * cx;
+      const Batch c20 = column(SZX) - cz * sx - cx * sz + s0 * cz * cx;
+      const Batch c21 = column(SZY) - cz * sy - cy * sz + s0 * cz * cy;
+      const Batch trace = c00 + c11 + c22;
       // the size of the terms that cancelled: the rounding error of C is about 1e-16 of it
-      const double cancelled = sxx + syy + szz + s0 * (cx * cx + cy * cy + cz * cz);
-      if(!(trace > 1e-6 * s0 * local.squared_radius(j)) || !(trace > 1e-6 * cancelled))
-      {
-        out = std::numeric_limits<double>::quiet_NaN();
-        continue;
-      }
-      out = NOT_EVALUATED;
-      c(0, 0) = c00;
-      c(1, 0) = syx - cy * sx - cx * sy + s0 * cy * cx;
-      c(2, 0) = szx - cz * sx - cx * sz + s0 * cz * cx;
-      c(1, 1) = c11;
-      c(2, 1) = szy - cz * sy - cy * sz + s0 * cz * cy;
-      c(2, 2) = c22;
-    }
-    for(unsigned int k = k_first; k <= k_max; ++k)
-    {
-      if(approx[k - k_min] != NOT_EVALUATED)
-        continue;
-      const std::array<double, 3> ev = symmetric_eigenvalues_3(s.matrices[k - k_min]);
-      const double l1 = ev[0], l2 = (std::max)(ev[1], 0.), l3 = (std::max)(ev[2], 0.);
-      if(!(l1 > 0.) || (l1 - l3) < 1e-3 * l1)
-      {
-        approx[k - k_min] = std::numeric_limits<double>::quiet_NaN();
-        continue;
-      }
-      const double inverse = 1. / l1;
-      s.shares[first_slot + (k - k_min)] = {{(l1 - l2) * inverse, (l2 - l3) * inverse, l3 * inverse}};
+      const Batch cancelled = column(SXX) + column(SYY) + column(SZZ) + s0 * (cx * cx + cy * cy + cz * cz);
+      column(TRACE) = trace;
+      column(TRACE_MARGIN) = trace - (1e-6 * s0 * column(RADIUS)).max(1e-3 * cancelled);
+      Batch l1, l2, l3;
+      unscaled_symmetric_eigenvalues_3<Batch>(c00, c10, c20, c11, c21, c22, l1, l2, l3);
+      l2 = l2.max(0.);
+      l3 = l3.max(0.);
+      column(L1) = l1;
+      column(L2) = l2;
+      column(L3) = l3;
+      // the error of the eigenvalues relative to lambda1: the closed form's, and the rounding of
+      // the two covariances (moments here, two passes in the exact path), below 100 eps cancelled
+      const Batch inverse_l1 = l1.inverse();
+      column(NOISE) = closed_form_relative_error<Batch>((l1 - l2).min(l2 - l3) * inverse_l1) +
+                      1e-13 * cancelled * inverse_l1;
     }
   }
 
