@@ -53,7 +53,7 @@ public:
     std::vector<double> weights; // pair-major, k_max + 1 per pair
     std::vector<double> approx;  // pair-major, one per k; NaN: not trusted, NOT_EVALUATED: see shares
     std::vector<double> margins; // pair-major, one per k: of approx, once it is evaluated
-    std::vector<std::array<double, 4>> shares; // pair-major, one per k: approximate (L, P, S), noise
+    std::vector<std::array<double, 4>> shares; // pair-major, one per k: approximate (L, P, S), cancellation
     std::vector<Dimensionality_features> exact; // pair-major, one per k, where `computed` says so
     std::vector<unsigned char> computed;
     std::vector<double> columns;              // see approximate_shares()
@@ -219,16 +219,22 @@ private:
     return m_settings.barycenter == Barycenter::WEIGHTED && k > m_settings.k_min && w[k] == 0.;
   }
 
-  // The margin of an approximate E whose eigenvalues are within noise * lambda1 of the exact path's:
-  // each share moves by at most delta = 3 noise (a difference of two eigenvalues over lambda1, and
-  // lambda1's own error), and -x ln x by at most delta (1 + ln(1 / delta)) (its modulus of
-  // continuity on [0, 1] is -delta ln delta), plus 1e-12 for the rounding of E itself. Noise is at
-  // most 2.01e-7 (2e-7 from the closed form, 3e-10 at the largest cancellation trusted), so the
-  // margin is at most 2.8e-5, below LARGEST_APPROXIMATION_MARGIN.
-  static double approximation_margin(double noise)
+  // The margin of an approximate E, from its shares L and P and the size of the terms that
+  // cancelled in its covariance, relative to lambda1. Its eigenvalues are within noise * lambda1
+  // of the exact path's: the closed form's error, and the rounding of the two covariances (moments
+  // here, two passes in the exact path), below 100 eps times what cancelled. Each share moves by
+  // at most delta = 3 noise (a difference of two eigenvalues over lambda1, and lambda1's own
+  // error), and -x ln x by at most delta (1 + ln(1 / delta)) (its modulus of continuity on [0, 1]
+  // is -delta ln delta), plus 1e-12 for the rounding of E itself. Noise is at most 2.01e-7 (2e-7
+  // from the closed form, 3e-10 at the largest cancellation trusted), so the margin is at most
+  // 2.8e-5, below LARGEST_APPROXIMATION_MARGIN.
+  static double approximation_margin(double linearity, double planarity, double cancellation)
   {
+    // the gaps lambda1 - lambda2 and lambda2 - lambda3, relative to lambda1, are L and P
+    const double noise = closed_form_relative_error((std::min)(linearity, planarity)) + 1e-13 * cancellation;
     const double delta = 3. * noise;
-    return 3. * delta * (1. - std::log(delta)) + 1e-12;
+    // ln(1 / delta) <= -e ln 2 for delta >= 2^e: no logarithm needed
+    return 3. * delta * (1. - std::ilogb(delta) * 0.6931471805599454) + 1e-12;
   }
 
   double exact_value(Scratch& s, Running_minimum& best) const
@@ -263,7 +269,7 @@ private:
       if(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] <= best.hopeless_squares)
         return;
       approx = dimensionality_error(x[0], x[1], x[2]);
-      s.margins[slot] = approximation_margin(x[3]);
+      s.margins[slot] = approximation_margin(x[0], x[1], x[3]);
     }
     // E >= 0: every entropy term is -x ln x with x in [0, 1]
     const double margin = s.margins[slot];
@@ -371,14 +377,8 @@ private:
       }
     }
 
-    if(weighted)
-      approximate_eigenvalues<true>(columns, stride, k_first - k_min, sizes);
-    else
-      approximate_eigenvalues<false>(columns, stride, k_first - k_min, sizes);
-
-    // Below this, the exact path's covariance, at the input's scale, nears the subnormal numbers
-    // and loses the accuracy that the margins assume.
-    const double smallest_trace = 1e-280 * local.unit_scale() * local.unit_scale();
+    // The sizes that need no eigenvalues: the point alone, or a repeat of the smaller size.
+    std::size_t first_solved = sizes, end_solved = 0;
     bool others = false; // a neighbor other than the point itself has weight
     for(unsigned int k = 1; k < k_first; ++k)
       others = others || w[k] != 0.;
@@ -386,7 +386,6 @@ private:
     {
       others = others || w[k] != 0.;
       const std::size_t c = k - k_min;
-      const double l1 = column(L1)[c], l2 = column(L2)[c], l3 = column(L3)[c];
       if(weighted && !others)
       {
         approx[c] = std::numeric_limits<double>::infinity(); // the point alone: C = 0 exactly, degenerate
@@ -394,32 +393,54 @@ private:
       }
       else if(repeats_smaller_size(w, k))
         approx[c] = std::numeric_limits<double>::quiet_NaN(); // never visited; exact if it were
-      else if(!(column(TRACE_MARGIN)[c] > 0.) || !(column(TRACE)[c] > smallest_trace) ||
-              !has_unscaled_eigenvalues(column(TRACE)[c]) || !(l1 > 0.) || l1 - l3 < 1e-3 * l1)
-        approx[c] = std::numeric_limits<double>::quiet_NaN(); // not trusted
       else
       {
         approx[c] = NOT_EVALUATED;
-        const double inverse = 1. / l1;
-        shares[c] = {{(l1 - l2) * inverse, (l2 - l3) * inverse, l3 * inverse, column(NOISE)[c]}};
+        first_solved = (std::min)(first_solved, c);
+        end_solved = c + 1;
       }
+    }
+    if(first_solved >= end_solved)
+      return;
+
+    if(weighted)
+      approximate_eigenvalues<true>(columns, stride, first_solved, end_solved);
+    else
+      approximate_eigenvalues<false>(columns, stride, first_solved, end_solved);
+
+    // Below this, the exact path's covariance, at the input's scale, nears the subnormal numbers
+    // and loses the accuracy that the margins assume.
+    const double smallest_trace = 1e-280 * local.unit_scale() * local.unit_scale();
+    for(std::size_t c = first_solved; c < end_solved; ++c)
+    {
+      if(approx[c] != NOT_EVALUATED)
+        continue;
+      const double l1 = column(L1)[c], l2 = column(L2)[c], l3 = column(L3)[c], trace = column(TRACE)[c];
+      if(!(column(TRACE_MARGIN)[c] > 0.) || !(trace > smallest_trace) || !has_unscaled_eigenvalues(trace) ||
+         !(l1 > 0.) || l1 - l3 < 1e-3 * l1)
+      {
+        approx[c] = std::numeric_limits<double>::quiet_NaN(); // not trusted
+        continue;
+      }
+      const double inverse = 1. / l1;
+      shares[c] = {{(l1 - l2) * inverse, (l2 - l3) * inverse, l3 * inverse, column(CANCELLATION)[c] * inverse}};
     }
   }
 
   // Columns of approximate_shares(), each of stride column_stride().
   enum Column { S0, SX, SY, SZ, SXX, SYX, SZX, SYY, SZY, SZZ, UX, UY, UZ, RADIUS, // prefix sums and radii
-                L1, L2, L3, TRACE, TRACE_MARGIN, NOISE, NUMBER_OF_COLUMNS };           // results
+                L1, L2, L3, TRACE, TRACE_MARGIN, CANCELLATION, NUMBER_OF_COLUMNS };    // results
   typedef Eigen::Array<double, 8, 1> Batch; // k per batch: an AVX-512 register, or several narrower ones
 
   std::size_t column_stride() const { return m_settings.number_of_sizes() + Batch::SizeAtCompileTime; }
 
-  // The second half of approximate_shares(): columns [first, sizes) of the prefix sums to
+  // The second half of approximate_shares(): columns [first, end) of the prefix sums to
   // eigenvalues, in batches of Batch::SizeAtCompileTime sizes k that Eigen vectorizes (the last
-  // batch reads and writes past `sizes`, within the stride, where nothing is used).
+  // batch reads and writes past `end`, within the stride, where nothing is used).
   template <bool Weighted>
-  static void approximate_eigenvalues(double* columns, std::size_t stride, std::size_t first, std::size_t sizes)
+  static void approximate_eigenvalues(double* columns, std::size_t stride, std::size_t first, std::size_t end)
   {
-    for(std::size_t c = first; c < sizes; c += Batch::SizeAtCompileTime)
+    for(std::size_t c = first; c < end; c += Batch::SizeAtCompileTime)
     {
       auto column = [&](Column i) { return Eigen::Map<Batch>(columns + i * stride + c); };
       const Batch s0 = column(S0), sx = column(SX), sy = column(SY), sz = column(SZ);
@@ -456,11 +477,7 @@ private:
       column(L1) = l1;
       column(L2) = l2;
       column(L3) = l3;
-      // the error of the eigenvalues relative to lambda1: the closed form's, and the rounding of
-      // the two covariances (moments here, two passes in the exact path), below 100 eps cancelled
-      const Batch inverse_l1 = l1.inverse();
-      column(NOISE) = closed_form_relative_error<Batch>((l1 - l2).min(l2 - l3) * inverse_l1) +
-                      1e-13 * cancelled * inverse_l1;
+      column(CANCELLATION) = cancelled;
     }
   }
 
