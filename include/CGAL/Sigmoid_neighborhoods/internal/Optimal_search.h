@@ -14,7 +14,6 @@
 
 #include <Eigen/Core>
 
-
 #include <algorithm>
 #include <array>
 #include <cmath>
