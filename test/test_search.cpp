@@ -261,6 +261,28 @@ TEST_CASE("optimal search equals the plain loop over all 420 triples", "[optimal
   }
 }
 
+TEST_CASE("optimal search equals the plain loop at tiny and huge scales", "[optimal][scale]")
+{
+  // The approximations work on offsets scaled to a unit radius, the exact path at the input's
+  // scale: the comparisons they decide must come out the same from 1e-150 to 1e120.
+  for(double scale : {1e-150, 1e-60, 1e120})
+  {
+    Point_list points = folded_sheet(12, 3);
+    for(auto& p : points)
+      p.first = Point_3(p.first.x() * scale, p.first.y() * scale, p.first.z() * scale);
+    const auto fast = optimal(points, SN::Barycenter::WEIGHTED);
+    REQUIRE(fast.size() == points.size());
+    std::size_t finite = 0;
+    for(std::size_t i = 0; i < points.size(); i += 5)
+    {
+      const auto plain = plain_optimal(points, i, SN::Barycenter::WEIGHTED);
+      CHECK(same_record(fast[i], plain));
+      finite += std::isfinite(fast[i].error());
+    }
+    CHECK(finite > 0);
+  }
+}
+
 TEST_CASE("fixed triple features equal the optimal record at its own triple", "[features][optimal]")
 {
   const Point_list points = folded_sheet(12, 2);
