@@ -234,6 +234,14 @@ TEST_CASE("all-ones weights are recognised exactly where the sigmoid gives 1 eve
         if(ones)
           CHECK(every_one);
         ones ? ++all_ones : ++evaluated;
+        // the optimal search's form: cosine arguments, then weights
+        std::vector<double> t(angles.size());
+        CHECK(local.transition_arguments(sigmoid, t.data()) == ones);
+        for(std::size_t j = 0; j < angles.size(); ++j)
+        {
+          const double v = SN::Cosine_sigmoid::weight_of_argument(t[j]);
+          CHECK(std::memcmp(&w[j], &v, sizeof(double)) == 0);
+        }
       }
   }
   CHECK(all_ones > 0);
@@ -258,6 +266,35 @@ TEST_CASE("optimal search equals the plain loop over all 420 triples", "[optimal
       CHECK(first_pair < checked / 2); // the noisy normals exercise the whole grid
     else
       CHECK(first_pair == checked); // SPEC 4: the lone point gives a rank-one matrix, E = 0
+  }
+}
+
+TEST_CASE("optimal search equals the plain loop where band weights round to 0 and 1", "[optimal][sigmoid]")
+{
+  // Normal angles within 1e-10 of the grid's values: inside the transition band of some pairs,
+  // the weight 1/2 cos(t) + 1/2 then rounds to exactly 0 (t near pi) or 1 (t near 0), which the
+  // search, deciding cases from the arguments, does not recognise as repeats; the outcome must
+  // not change.
+  Point_list points = folded_sheet(14, 7);
+  std::mt19937_64 rng(7);
+  const std::vector<double> tilts{0., pi / 3 - 1e-10, pi / 6 + 1e-10, pi / 2 - 3e-10, pi / 3 + 2e-11, 1e-7};
+  for(auto& p : points)
+  {
+    const double tilt = tilts[rng() % tilts.size()];
+    p.second = Vector_3(0., std::sin(tilt), std::cos(tilt));
+  }
+  for(auto bary : {SN::Barycenter::WEIGHTED, SN::Barycenter::UNWEIGHTED})
+  {
+    const auto fast = optimal(points, bary);
+    REQUIRE(fast.size() == points.size());
+    std::size_t finite = 0;
+    for(std::size_t i = 0; i < points.size(); i += 4)
+    {
+      const auto plain = plain_optimal(points, i, bary);
+      CHECK(same_record(fast[i], plain));
+      finite += std::isfinite(fast[i].error());
+    }
+    CHECK(finite > 0);
   }
 }
 

@@ -86,16 +86,36 @@ public:
   bool is_equal_weights() const { return m_a == internal::PI && m_b == internal::PI; }
 
   /// the weight of the angle `x` in `[0, pi]` (the reference formulation).
-  double operator()(double x) const
+  double operator()(double x) const { return weight_of_argument(transition_argument(x)); }
+
+  /// \cond SKIP_IN_MANUAL
+  // The weight of x is 1, 0, or 1/2 cos(t) + 1/2 with the argument t in [0, pi] returned here
+  // (WEIGHT_ONE and WEIGHT_ZERO, both negative, stand for the first two): the one place where
+  // the case and the argument of the cosine are decided, so that a path evaluating the cosine
+  // differently (internal::approximate_cosine()) agrees with this one on both, and equal
+  // arguments mean equal weights.
+  static constexpr double WEIGHT_ONE = -1., WEIGHT_ZERO = -2.;
+
+  double transition_argument(double x) const
   {
     if(x <= m_tolerance || x < m_a)
-      return 1.;
+      return WEIGHT_ONE;
     if(m_a == m_b)
-      return x <= m_a ? 1. : 0.;
+      return x <= m_a ? WEIGHT_ONE : WEIGHT_ZERO;
     if(x > m_b)
-      return 0.;
-    return 0.5 * std::cos(internal::PI * (x - m_a) / (m_b - m_a)) + 0.5;
+      return WEIGHT_ZERO;
+    return internal::PI * (x - m_a) / (m_b - m_a);
   }
+
+  static double weight_of_argument(double t)
+  {
+    if(t == WEIGHT_ONE)
+      return 1.;
+    if(t == WEIGHT_ZERO)
+      return 0.;
+    return 0.5 * std::cos(t) + 0.5;
+  }
+  /// \endcond
 
   /*!
     the weight of two unit normals given their dot product `c`: the same value as

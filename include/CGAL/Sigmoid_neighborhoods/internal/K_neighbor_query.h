@@ -78,7 +78,8 @@ public:
     for(;;)
     {
       result.clear();
-      Search search(m_tree, m_points[i], static_cast<unsigned int>(asked), 0., true, Distance(m_map));
+      // unsorted: the one sort is ours, with the tie rule
+      Search search(m_tree, m_points[i], static_cast<unsigned int>(asked), 0., true, Distance(m_map), false);
       for(const auto& found : search)
         result.push_back(Neighbor{found.first, found.second});
       std::sort(result.begin(), result.end(), [](const Neighbor& x, const Neighbor& y) {

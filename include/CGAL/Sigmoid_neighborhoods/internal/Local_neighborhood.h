@@ -133,6 +133,20 @@ public:
     return false;
   }
 
+  // Cosine_sigmoid::transition_argument() for all j in N_i(k_max): what weights() computes, short
+  // of the cosine; returns true when all weights are 1, as weights() does.
+  bool transition_arguments(const Cosine_sigmoid& sigmoid, double* t) const
+  {
+    if(m_largest_angle <= sigmoid.angle_tolerance() || m_largest_angle < sigmoid.a())
+    {
+      std::fill(t, t + m_angles.size(), Cosine_sigmoid::WEIGHT_ONE);
+      return true;
+    }
+    for(std::size_t j = 0; j < m_angles.size(); ++j)
+      t[j] = sigmoid.transition_argument(m_angles[j]);
+    return false;
+  }
+
   Weighted_covariance covariance(const double* w, unsigned int k, Barycenter barycenter) const
   {
     Weighted_covariance result;

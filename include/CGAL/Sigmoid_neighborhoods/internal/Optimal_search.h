@@ -10,6 +10,7 @@
 #include <CGAL/Sigmoid_neighborhoods/internal/Local_neighborhood.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Symmetric_eigenvalues_3.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/approximate_cosine.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
 #include <Eigen/Core>
@@ -37,8 +38,8 @@ constexpr double LARGEST_APPROXIMATION_MARGIN = 1e-4;
 // evaluated from it, with the result of the plain loop bit for bit. Two things save time:
 // - pairs whose weights agree on N_i(k) share the exact result of the first of them (the same
 //   inputs through the same code give the same bits);
-// - every triple first gets a cheap approximate error (moments accumulated over k, closed-form
-//   eigenvalues) and a margin within which it is exact; each comparison of the scan is decided from
+// - every triple first gets a cheap approximate error (weights from a polynomial cosine, moments
+//   accumulated over k, closed-form eigenvalues) and a margin within which it is exact; each comparison of the scan is decided from
 //   these bounds when they decide it, and from exact errors (two-pass covariance, iterative eigen
 //   solver) only where the bounds of the triple and of the best so far overlap. Every comparison
 //   thus has the plain loop's outcome, and so have the visiting order and the tie rule.
@@ -49,10 +50,13 @@ public:
   {
     std::vector<Neighbor> neighbors;
     Local_neighborhood local;
-    std::vector<double> weights; // pair-major, k_max + 1 per pair
+    std::vector<double> arguments; // pair-major, weight_stride() per pair: Cosine_sigmoid::transition_argument()
+    std::vector<double> weights;   // pair-major, weight_stride() per pair: exact, where has_weights says so
+    std::vector<unsigned char> has_weights;
+    std::vector<double> approximate_weights; // of the pair being prepared, weight_stride()
     std::vector<double> approx;  // pair-major, one per k; NaN: not trusted, NOT_EVALUATED: see shares
     std::vector<double> margins; // pair-major, one per k: of approx, once it is evaluated
-    std::vector<std::array<double, 4>> shares; // pair-major, one per k: approximate (L, P, S), cancellation
+    std::vector<std::array<double, 4>> shares; // pair-major, one per k: approximate (L, P, S), noise / lambda1
     std::vector<Dimensionality_features> exact; // pair-major, one per k, where `computed` says so
     std::vector<unsigned char> computed;
     std::vector<double> columns;              // see approximate_shares()
@@ -71,7 +75,10 @@ public:
   Scratch make_scratch() const
   {
     Scratch s;
-    s.weights.resize(m_sigmoids.size() * (m_settings.k_max + 1));
+    s.arguments.resize(m_sigmoids.size() * weight_stride(), Cosine_sigmoid::WEIGHT_ZERO);
+    s.weights.resize(m_sigmoids.size() * weight_stride());
+    s.has_weights.resize(m_sigmoids.size());
+    s.approximate_weights.resize(weight_stride());
     s.approx.resize(m_sigmoids.size() * m_settings.number_of_sizes());
     s.shares.resize(m_sigmoids.size() * m_settings.number_of_sizes());
     s.margins.resize(m_sigmoids.size() * m_settings.number_of_sizes());
@@ -105,9 +112,9 @@ public:
     {
       const std::size_t p = prepared;
       prepare(s, p, p);
-      const double* w = &s.weights[p * (k_max + 1)];
+      const double* t = &s.arguments[p * weight_stride()];
       for(unsigned int k = (std::max)(k_min, unsigned(std::min<std::size_t>(s.shared[p], k_max + 1))); k <= k_max; ++k)
-        if(!repeats_smaller_size(w, k))
+        if(!repeats_smaller_size(t, k))
           visit(s, p, k, best);
     }
 
@@ -176,13 +183,17 @@ private:
 
   static constexpr double NOT_EVALUATED = -1.;
 
-  // Weights of pair p, the earlier pair among [0, candidates) sharing the longest prefix of weights
-  // with it, and approximations for the sizes it does not share.
+  // The weights' arguments of pair p, the earlier pair among [0, candidates) sharing the longest
+  // prefix of arguments (hence of weights) with it, and approximations for the sizes it does not
+  // share. Its exact weights are computed when an exact value needs them. (Different arguments may
+  // still give equal weights, 1 near t = 0 for instance; such pairs are merely not recognised as
+  // repeats, and visiting a repeat never changes the outcome of the scan.)
   void prepare(Scratch& s, std::size_t p, std::size_t candidates) const
   {
     const std::size_t m = m_settings.k_max + 1, none = m_sigmoids.size();
-    double* w = &s.weights[p * m];
-    const bool all_ones = s.local.weights(m_sigmoids[p], w);
+    double* w = &s.arguments[p * weight_stride()];
+    const bool all_ones = s.local.transition_arguments(m_sigmoids[p], w);
+    s.has_weights[p] = 0;
     s.shared[p] = 0;
     s.source[p] = p;
     if(all_ones && s.first_all_ones != none)
@@ -196,7 +207,7 @@ private:
     {
       if(s.shared[q] == m)
         continue; // q repeats an earlier pair entirely: that one is compared instead
-      const double* v = &s.weights[q * m];
+      const double* v = &s.arguments[q * weight_stride()];
       std::size_t l = 0;
       while(l < m && v[l] == w[l])
         ++l;
@@ -212,25 +223,25 @@ private:
       approximate_shares(s, w, s.shared[p], p * m_settings.number_of_sizes());
   }
 
-  // (p, k) with a zero weight on the k-th neighbor repeats (p, k - 1) (see operator()).
-  bool repeats_smaller_size(const double* w, unsigned int k) const
+  // (p, k) with a zero weight on the k-th neighbor repeats (p, k - 1) (see operator()); `t` holds
+  // the weights' arguments. (A weight in the transition band that rounds to 0 is not recognised.)
+  bool repeats_smaller_size(const double* t, unsigned int k) const
   {
-    return m_settings.barycenter == Barycenter::WEIGHTED && k > m_settings.k_min && w[k] == 0.;
+    return m_settings.barycenter == Barycenter::WEIGHTED && k > m_settings.k_min && t[k] == Cosine_sigmoid::WEIGHT_ZERO;
   }
 
-  // The margin of an approximate E, from its shares L and P and the size of the terms that
-  // cancelled in its covariance, relative to lambda1. Its eigenvalues are within noise * lambda1
-  // of the exact path's: the closed form's error, and the rounding of the two covariances (moments
-  // here, two passes in the exact path), below 100 eps times what cancelled. Each share moves by
-  // at most delta = 3 noise (a difference of two eigenvalues over lambda1, and lambda1's own
-  // error), and -x ln x by at most delta (1 + ln(1 / delta)) (its modulus of continuity on [0, 1]
-  // is -delta ln delta), plus 1e-12 for the rounding of E itself. Noise is at most 2.01e-7 (2e-7
-  // from the closed form, 3e-10 at the largest cancellation trusted), so the margin is at most
-  // 2.8e-5, below LARGEST_APPROXIMATION_MARGIN.
-  static double approximation_margin(double linearity, double planarity, double cancellation)
+  // The margin of an approximate E, from its shares L and P and the covariance's noise relative to
+  // lambda1. Its eigenvalues are within noise * lambda1 of the exact path's: the closed form's
+  // error, and the covariance's (see approximate_shares()). Each share moves by at most
+  // delta = 3 noise (a difference of two eigenvalues over lambda1, and lambda1's own error), and
+  // -x ln x by at most delta (1 + ln(1 / delta)) (its modulus of continuity on [0, 1] is
+  // -delta ln delta), plus 1e-12 for the rounding of E itself. Noise is at most 2.02e-7 (2e-7 from
+  // the closed form, at most 1.3e-9 from the covariance where it is trusted), so the margin is at
+  // most 2.8e-5, below LARGEST_APPROXIMATION_MARGIN.
+  static double approximation_margin(double linearity, double planarity, double covariance_noise)
   {
     // the gaps lambda1 - lambda2 and lambda2 - lambda3, relative to lambda1, are L and P
-    const double noise = closed_form_relative_error((std::min)(linearity, planarity)) + 1e-13 * cancellation;
+    const double noise = closed_form_relative_error((std::min)(linearity, planarity)) + covariance_noise;
     const double delta = 3. * noise;
     // ln(1 / delta) <= -e ln 2 for delta >= 2^e: no logarithm needed
     return 3. * delta * (1. - std::ilogb(delta) * 0.6931471805599454) + 1e-12;
@@ -298,7 +309,16 @@ private:
     const std::size_t slot = p * m_settings.number_of_sizes() + (k - m_settings.k_min);
     if(!s.computed[slot])
     {
-      s.exact[slot] = s.local.features(&s.weights[p * (m_settings.k_max + 1)], k, m_settings.barycenter);
+      double* w = &s.weights[p * weight_stride()];
+      if(!s.has_weights[p])
+      {
+        // Local_neighborhood::weights(), bit for bit: the same arguments through the same function
+        const double* t = &s.arguments[p * weight_stride()];
+        for(std::size_t j = 0; j <= m_settings.k_max; ++j)
+          w[j] = Cosine_sigmoid::weight_of_argument(t[j]);
+        s.has_weights[p] = 1;
+      }
+      s.exact[slot] = s.local.features(w, k, m_settings.barycenter);
       s.computed[slot] = 1;
     }
     return s.exact[slot];
@@ -306,7 +326,8 @@ private:
 
   double exact_error(Scratch& s, std::size_t p, unsigned int k) const { return exact_features(s, p, k).error; }
 
-  // Approximate (L, P, S) for every k, from moments accumulated over the neighbors (one pass) and
+  // Approximate (L, P, S) for every k, from weights within APPROXIMATE_WEIGHT_ERROR of the exact
+  // ones (`t` holds their arguments), moments accumulated over the neighbors (one pass) and
   // closed-form eigenvalues, with the noise from which visit() derives the margin of E_dim; E_dim
   // itself is evaluated only where a comparison needs it. The approximation is marked NaN (not
   // trusted: the exact path decides) close to the degenerate threshold, where the moments cancel
@@ -316,7 +337,7 @@ private:
   // so are the sizes that repeat a smaller one.
   // The prefix sums are taken in one pass; everything after them is independent from one k to the
   // next, solved in batches that Eigen vectorizes.
-  void approximate_shares(Scratch& s, const double* w, std::size_t shared, std::size_t first_slot) const
+  void approximate_shares(Scratch& s, const double* t, std::size_t shared, std::size_t first_slot) const
   {
     const Local_neighborhood& local = s.local;
     const unsigned int k_min = m_settings.k_min, k_max = m_settings.k_max;
@@ -327,6 +348,19 @@ private:
     std::array<double, 4>* shares = &s.shares[first_slot];
     double* margins = &s.margins[first_slot];
 
+    // The weights, the cosines of a batch at a time (the arguments are padded to a whole batch).
+    double* const w = s.approximate_weights.data();
+    bool transition = false;
+    for(unsigned int j = 0; j <= k_max; ++j)
+      transition = transition || t[j] >= 0.;
+    if(transition)
+      for(std::size_t j = 0; j < weight_stride(); j += Batch::SizeAtCompileTime)
+        Eigen::Map<Batch>(w + j) =
+          (0.5 * approximate_cosine<Batch>(Eigen::Map<const Batch>(t + j)) + 0.5).max(0.).min(1.);
+    for(unsigned int j = 0; j <= k_max; ++j)
+      if(!(t[j] >= 0.))
+        w[j] = t[j] == Cosine_sigmoid::WEIGHT_ONE ? 1. : 0.;
+
     // Per k: sums of w, w q and w q q^T over N_i(k), and the barycenter when it is unweighted, in
     // the unit offsets q: at that scale the closed form neither overflows nor underflows.
     const std::size_t stride = column_stride();
@@ -335,8 +369,10 @@ private:
     {
       double t0 = 0., tx = 0., ty = 0., tz = 0., txx = 0., tyx = 0., tzx = 0., tyy = 0., tzy = 0., tzz = 0.;
       double vx = 0., vy = 0., vz = 0.;
+      double transition_size = 0.; // neighbors in the transition band, whose weights are approximate
       for(unsigned int j = 0; j <= k_max; ++j)
       {
+        transition_size += t[j] >= 0. ? 1. : 0.;
         const Eigen::Vector3d& q = local.unit_offset(j);
         vx += q[0];
         vy += q[1];
@@ -373,6 +409,7 @@ private:
         column(UY)[c] = vy * inverse_size;
         column(UZ)[c] = vz * inverse_size;
         column(RADIUS)[c] = local.unit_squared_radius(j);
+        column(TRANSITION_SIZE)[c] = transition_size;
       }
     }
 
@@ -380,17 +417,17 @@ private:
     std::size_t first_solved = sizes, end_solved = 0;
     bool others = false; // a neighbor other than the point itself has weight
     for(unsigned int k = 1; k < k_first; ++k)
-      others = others || w[k] != 0.;
+      others = others || t[k] != Cosine_sigmoid::WEIGHT_ZERO;
     for(unsigned int k = k_first; k <= k_max; ++k)
     {
-      others = others || w[k] != 0.;
+      others = others || t[k] != Cosine_sigmoid::WEIGHT_ZERO;
       const std::size_t c = k - k_min;
       if(weighted && !others)
       {
         approx[c] = std::numeric_limits<double>::infinity(); // the point alone: C = 0 exactly, degenerate
         margins[c] = 0.;
       }
-      else if(repeats_smaller_size(w, k))
+      else if(repeats_smaller_size(t, k))
         approx[c] = std::numeric_limits<double>::quiet_NaN(); // never visited; exact if it were
       else
       {
@@ -415,23 +452,38 @@ private:
       if(approx[c] != NOT_EVALUATED)
         continue;
       const double l1 = column(L1)[c], l2 = column(L2)[c], l3 = column(L3)[c], trace = column(TRACE)[c];
+      // The covariance's noise: the rounding of the moments here and of the two passes of the exact
+      // path, below 100 eps times what cancelled (at most 1e3 trace where trusted, so at most 3e-10
+      // l1), and the weights' error: APPROXIMATE_WEIGHT_ERROR on each neighbor of the transition
+      // band moves C by that times |q_j - c|^2 <= 4 r^2 (the first-order change of C with w_j is
+      // (q_j - c)(q_j - c)^T, the barycenter's own change cancelling), and the eigenvalues by as
+      // much (Weyl); at most 1e-9 l1 where trusted.
+      const double weight_noise = 4. * APPROXIMATE_WEIGHT_ERROR * column(TRANSITION_SIZE)[c] * column(RADIUS)[c];
       if(!(column(TRACE_MARGIN)[c] > 0.) || !(trace > smallest_trace) || !has_unscaled_eigenvalues(trace) ||
-         !(l1 > 0.) || l1 - l3 < 1e-3 * l1)
+         !(l1 > 0.) || l1 - l3 < 1e-3 * l1 || weight_noise > 1e-9 * l1)
       {
         approx[c] = std::numeric_limits<double>::quiet_NaN(); // not trusted
         continue;
       }
       const double inverse = 1. / l1;
-      shares[c] = {{(l1 - l2) * inverse, (l2 - l3) * inverse, l3 * inverse, column(CANCELLATION)[c] * inverse}};
+      shares[c] = {{(l1 - l2) * inverse, (l2 - l3) * inverse, l3 * inverse,
+                    (1e-13 * column(CANCELLATION)[c] + weight_noise) * inverse}};
     }
   }
 
   // Columns of approximate_shares(), each of stride column_stride().
-  enum Column { S0, SX, SY, SZ, SXX, SYX, SZX, SYY, SZY, SZZ, UX, UY, UZ, RADIUS, // prefix sums and radii
+  enum Column { S0, SX, SY, SZ, SXX, SYX, SZX, SYY, SZY, SZZ, UX, UY, UZ, RADIUS, TRANSITION_SIZE, // prefix sums
                 L1, L2, L3, TRACE, TRACE_MARGIN, CANCELLATION, NUMBER_OF_COLUMNS };    // results
   typedef Eigen::Array<double, 8, 1> Batch; // k per batch: an AVX-512 register, or several narrower ones
 
   std::size_t column_stride() const { return m_settings.number_of_sizes() + Batch::SizeAtCompileTime; }
+
+  // N_i(k_max) rounded up to whole batches
+  std::size_t weight_stride() const
+  {
+    const std::size_t b = Batch::SizeAtCompileTime;
+    return (m_settings.k_max + 1 + b - 1) / b * b;
+  }
 
   // The second half of approximate_shares(): columns [first, end) of the prefix sums to
   // eigenvalues, in batches of Batch::SizeAtCompileTime sizes k that Eigen vectorizes (the last
