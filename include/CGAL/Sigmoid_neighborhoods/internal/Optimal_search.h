@@ -39,10 +39,11 @@ constexpr double LARGEST_APPROXIMATION_MARGIN = 1e-4;
 // - pairs whose weights agree on N_i(k) share the exact result of the first of them (the same
 //   inputs through the same code give the same bits);
 // - every triple first gets a cheap approximate error (weights from a polynomial cosine, moments
-//   accumulated over k, closed-form eigenvalues) and a margin within which it is exact; each comparison of the scan is decided from
-//   these bounds when they decide it, and from exact errors (two-pass covariance, iterative eigen
-//   solver) only where the bounds of the triple and of the best so far overlap. Every comparison
-//   thus has the plain loop's outcome, and so have the visiting order and the tie rule.
+//   accumulated over k, closed-form eigenvalues) and a margin within which it is exact; each
+//   comparison of the scan is decided from these bounds when they decide it, and from exact errors
+//   (exact weights, two-pass covariance, iterative eigen solver) only where the bounds of the
+//   triple and of the best so far overlap. Every comparison thus has the plain loop's outcome, and
+//   so have the visiting order and the tie rule.
 class Optimal_search
 {
 public:
@@ -191,8 +192,8 @@ private:
   void prepare(Scratch& s, std::size_t p, std::size_t candidates) const
   {
     const std::size_t m = m_settings.k_max + 1, none = m_sigmoids.size();
-    double* w = &s.arguments[p * weight_stride()];
-    const bool all_ones = s.local.transition_arguments(m_sigmoids[p], w);
+    double* t = &s.arguments[p * weight_stride()];
+    const bool all_ones = s.local.transition_arguments(m_sigmoids[p], t);
     s.has_weights[p] = 0;
     s.shared[p] = 0;
     s.source[p] = p;
@@ -209,7 +210,7 @@ private:
         continue; // q repeats an earlier pair entirely: that one is compared instead
       const double* v = &s.arguments[q * weight_stride()];
       std::size_t l = 0;
-      while(l < m && v[l] == w[l])
+      while(l < m && v[l] == t[l])
         ++l;
       if(l > s.shared[p])
       {
@@ -220,14 +221,15 @@ private:
     if(all_ones)
       s.first_all_ones = s.shared[p] < m ? p : s.source[p];
     if(s.shared[p] < m)
-      approximate_shares(s, w, s.shared[p], p * m_settings.number_of_sizes());
+      approximate_shares(s, t, s.shared[p], p * m_settings.number_of_sizes());
   }
 
   // (p, k) with a zero weight on the k-th neighbor repeats (p, k - 1) (see operator()); `t` holds
   // the weights' arguments. (A weight in the transition band that rounds to 0 is not recognised.)
   bool repeats_smaller_size(const double* t, unsigned int k) const
   {
-    return m_settings.barycenter == Barycenter::WEIGHTED && k > m_settings.k_min && t[k] == Cosine_sigmoid::WEIGHT_ZERO;
+    return m_settings.barycenter == Barycenter::WEIGHTED && k > m_settings.k_min &&
+           t[k] == Cosine_sigmoid::WEIGHT_ZERO;
   }
 
   // The margin of an approximate E, from its shares L and P and the covariance's noise relative to
