@@ -123,22 +123,19 @@ public:
   // every angle is below a (or within the tolerance): on smooth surfaces, most pairs of the grid.
   bool weights(const Cosine_sigmoid& sigmoid, double* w) const
   {
-    if(m_largest_angle <= sigmoid.angle_tolerance() || m_largest_angle < sigmoid.a())
-    {
-      std::fill(w, w + m_angles.size(), 1.); // what sigmoid(x) gives for every x <= m_largest_angle
-      return true;
-    }
+    const bool all_ones = transition_arguments(sigmoid, w);
     for(std::size_t j = 0; j < m_angles.size(); ++j)
-      w[j] = sigmoid(m_angles[j]);
-    return false;
+      w[j] = Cosine_sigmoid::weight_of_argument(w[j]); // in place: sigmoid(angle j)
+    return all_ones;
   }
 
-  // Cosine_sigmoid::transition_argument() for all j in N_i(k_max): what weights() computes, short
-  // of the cosine; returns true when all weights are 1, as weights() does.
+  // Cosine_sigmoid::transition_argument() for all j in N_i(k_max): weights() short of the cosine;
+  // returns true when all weights are 1, as weights() does.
   bool transition_arguments(const Cosine_sigmoid& sigmoid, double* t) const
   {
     if(m_largest_angle <= sigmoid.angle_tolerance() || m_largest_angle < sigmoid.a())
     {
+      // what transition_argument(x) gives for every x <= m_largest_angle
       std::fill(t, t + m_angles.size(), Cosine_sigmoid::WEIGHT_ONE);
       return true;
     }

@@ -315,6 +315,7 @@ private:
       if(!s.has_weights[p])
       {
         // Local_neighborhood::weights(), bit for bit: the same arguments through the same function
+        // (weights() itself would recompute the arguments)
         const double* t = &s.arguments[p * weight_stride()];
         for(std::size_t j = 0; j <= m_settings.k_max; ++j)
           w[j] = Cosine_sigmoid::weight_of_argument(t[j]);
@@ -350,7 +351,8 @@ private:
     std::array<double, 4>* shares = &s.shares[first_slot];
     double* margins = &s.margins[first_slot];
 
-    // The weights, the cosines of a batch at a time (the arguments are padded to a whole batch).
+    // The weights, the cosines of a batch at a time (the arguments are padded to a whole batch),
+    // clamped to [0, 1] where the exact weights lie (so that no rounding makes one negative).
     double* const w = s.approximate_weights.data();
     bool transition = false;
     for(unsigned int j = 0; j <= k_max; ++j)
