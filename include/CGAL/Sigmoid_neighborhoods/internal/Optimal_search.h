@@ -61,6 +61,7 @@ public:
     std::vector<Dimensionality_features> exact; // pair-major, one per k, where `computed` says so
     std::vector<unsigned char> computed;
     std::vector<double> columns;              // see approximate_shares()
+    Eigen::Matrix<double, 10, Eigen::Dynamic> moments; // per neighbor: 1, q, q q^T (see point_columns())
     std::vector<std::size_t> shared, source; // per pair: prefix shared with an earlier pair
     std::size_t first_all_ones = 0; // the first pair with all weights 1 not repeating an earlier one
   };
@@ -97,6 +98,7 @@ public:
     const std::size_t pairs = m_sigmoids.size();
     m_query.query(i, k_max, s.neighbors);
     s.local.assign(m_input, i, s.neighbors);
+    point_columns(s);
     std::fill(s.computed.begin(), s.computed.end(), 0);
     s.first_all_ones = pairs;
 
@@ -365,54 +367,22 @@ private:
       if(!(t[j] >= 0.))
         w[j] = t[j] == Cosine_sigmoid::WEIGHT_ONE ? 1. : 0.;
 
-    // Per k: sums of w, w q and w q q^T over N_i(k), and the barycenter when it is unweighted, in
-    // the unit offsets q: at that scale the closed form neither overflows nor underflows.
+    // Per k: sums of w, w q and w q q^T over N_i(k) (see point_columns()).
     const std::size_t stride = column_stride();
     double* const columns = s.columns.data();
     auto column = [&](Column i) { return columns + i * stride; };
     {
-      double t0 = 0., tx = 0., ty = 0., tz = 0., txx = 0., tyx = 0., tzx = 0., tyy = 0., tzy = 0., tzz = 0.;
-      double vx = 0., vy = 0., vz = 0.;
+      Moments sums = Moments::Zero();
       double transition_size = 0.; // neighbors in the transition band, whose weights are approximate
       for(unsigned int j = 0; j <= k_max; ++j)
       {
         transition_size += t[j] >= 0. ? 1. : 0.;
-        const Eigen::Vector3d& q = local.unit_offset(j);
-        vx += q[0];
-        vy += q[1];
-        vz += q[2];
-        const double wj = w[j];
-        if(wj != 0.)
-        {
-          t0 += wj;
-          tx += wj * q[0];
-          ty += wj * q[1];
-          tz += wj * q[2];
-          txx += wj * q[0] * q[0];
-          tyx += wj * q[1] * q[0];
-          tzx += wj * q[2] * q[0];
-          tyy += wj * q[1] * q[1];
-          tzy += wj * q[2] * q[1];
-          tzz += wj * q[2] * q[2];
-        }
+        sums += w[j] * s.moments.col(j).array();
         if(j < k_first)
           continue;
         const std::size_t c = j - k_min;
-        column(S0)[c] = t0;
-        column(SX)[c] = tx;
-        column(SY)[c] = ty;
-        column(SZ)[c] = tz;
-        column(SXX)[c] = txx;
-        column(SYX)[c] = tyx;
-        column(SZX)[c] = tzx;
-        column(SYY)[c] = tyy;
-        column(SZY)[c] = tzy;
-        column(SZZ)[c] = tzz;
-        const double inverse_size = 1. / double(j + 1);
-        column(UX)[c] = vx * inverse_size;
-        column(UY)[c] = vy * inverse_size;
-        column(UZ)[c] = vz * inverse_size;
-        column(RADIUS)[c] = local.unit_squared_radius(j);
+        for(int i = 0; i < NUMBER_OF_MOMENTS; ++i)
+          column(Column(i))[c] = sums[i];
         column(TRANSITION_SIZE)[c] = transition_size;
       }
     }
@@ -475,9 +445,42 @@ private:
     }
   }
 
-  // Columns of approximate_shares(), each of stride column_stride().
-  enum Column { S0, SX, SY, SZ, SXX, SYX, SZX, SYY, SZY, SZZ, UX, UY, UZ, RADIUS, TRANSITION_SIZE, // prefix sums
+  // Columns of approximate_shares(), each of stride column_stride(): weighted moments of the pair
+  // in the order of point_columns()' moments, what does not depend on the pair, then results.
+  enum Column { S0, SX, SY, SZ, SXX, SYX, SZX, SYY, SZY, SZZ, NUMBER_OF_MOMENTS = 10, // prefix sums
+                UX = NUMBER_OF_MOMENTS, UY, UZ, RADIUS, TRANSITION_SIZE,
                 L1, L2, L3, TRACE, TRACE_MARGIN, CANCELLATION, NUMBER_OF_COLUMNS };    // results
+  typedef Eigen::Array<double, NUMBER_OF_MOMENTS, 1> Moments;
+
+  // What approximate_shares() needs of the neighborhood whatever the pair: the moments
+  // (1, q, q q^T) of every unit offset q (lower triangle, in the order of Column), and per k the
+  // unweighted barycenter and the squared radius, all in unit offsets: at that scale the closed
+  // form neither overflows nor underflows.
+  void point_columns(Scratch& s) const
+  {
+    const Local_neighborhood& local = s.local;
+    const unsigned int k_min = m_settings.k_min, k_max = m_settings.k_max;
+    s.moments.resize(NUMBER_OF_MOMENTS, k_max + 1);
+    double* const columns = s.columns.data();
+    auto column = [&](Column i) { return columns + i * column_stride(); };
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for(unsigned int j = 0; j <= k_max; ++j)
+    {
+      const Eigen::Vector3d& q = local.unit_offset(j);
+      s.moments.col(j) << 1., q[0], q[1], q[2], q[0] * q[0], q[1] * q[0], q[2] * q[0], q[1] * q[1], q[2] * q[1],
+        q[2] * q[2];
+      sum += q;
+      if(j < k_min)
+        continue;
+      const std::size_t c = j - k_min;
+      const double inverse_size = 1. / double(j + 1);
+      column(UX)[c] = sum[0] * inverse_size;
+      column(UY)[c] = sum[1] * inverse_size;
+      column(UZ)[c] = sum[2] * inverse_size;
+      column(RADIUS)[c] = local.unit_squared_radius(j);
+    }
+  }
+
   typedef Eigen::Array<double, 8, 1> Batch; // k per batch: an AVX-512 register, or several narrower ones
 
   std::size_t column_stride() const { return m_settings.number_of_sizes() + Batch::SizeAtCompileTime; }

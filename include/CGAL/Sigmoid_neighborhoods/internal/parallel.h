@@ -71,9 +71,9 @@ void for_each_index_in_blocks(std::size_t n, const MakeScratch& make_scratch, co
   std::size_t threads = 1;
 #if defined(_OPENMP)
   if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
-    threads = static_cast<std::size_t>(omp_get_max_threads());
+    threads = static_cast<std::size_t>((std::max)(omp_get_max_threads(), 1));
 #endif
-  const std::size_t BLOCK = 2048 * (std::max)(threads, std::size_t(2));
+  const std::size_t BLOCK = 2048 * threads;
   std::vector<Result> results;
   for(std::size_t start = 0; start < n; start += BLOCK)
   {
