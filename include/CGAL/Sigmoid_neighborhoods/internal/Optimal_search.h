@@ -353,19 +353,18 @@ private:
     std::array<double, 4>* shares = &s.shares[first_slot];
     double* margins = &s.margins[first_slot];
 
-    // The weights, the cosines of a batch at a time (the arguments are padded to a whole batch),
-    // clamped to [0, 1] where the exact weights lie (so that no rounding makes one negative).
+    // The weights, a batch at a time (the arguments are padded to a whole batch), without branches:
+    // in the band the cosine, clamped to [0, 1] where the exact weights lie (so that no rounding
+    // makes one negative).
     double* const w = s.approximate_weights.data();
-    bool transition = false;
-    for(unsigned int j = 0; j <= k_max; ++j)
-      transition = transition || t[j] >= 0.;
-    if(transition)
-      for(std::size_t j = 0; j < weight_stride(); j += Batch::SizeAtCompileTime)
-        Eigen::Map<Batch>(w + j) =
-          (0.5 * approximate_cosine<Batch>(Eigen::Map<const Batch>(t + j)) + 0.5).max(0.).min(1.);
-    for(unsigned int j = 0; j <= k_max; ++j)
-      if(!(t[j] >= 0.))
-        w[j] = t[j] == Cosine_sigmoid::WEIGHT_ONE ? 1. : 0.;
+    for(std::size_t j = 0; j < weight_stride(); j += Batch::SizeAtCompileTime)
+    {
+      const Eigen::Map<const Batch> argument(t + j);
+      Eigen::Map<Batch>(w + j) =
+        (argument >= 0.)
+          .select((0.5 * approximate_cosine<Batch>(argument) + 0.5).max(0.).min(1.),
+                  (argument == Cosine_sigmoid::WEIGHT_ONE).select(Batch::Ones(), Batch::Zero()));
+    }
 
     // Per k: sums of w, w q and w q q^T over N_i(k) (see point_columns()).
     const std::size_t stride = column_stride();
