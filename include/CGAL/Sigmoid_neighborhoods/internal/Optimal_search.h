@@ -458,6 +458,7 @@ private:
   void point_columns(Scratch& s) const
   {
     const Local_neighborhood& local = s.local;
+    static_assert(decltype(s.moments)::RowsAtCompileTime == NUMBER_OF_MOMENTS, "one row per moment");
     const unsigned int k_min = m_settings.k_min, k_max = m_settings.k_max;
     s.moments.resize(NUMBER_OF_MOMENTS, k_max + 1);
     double* const columns = s.columns.data();
