@@ -55,6 +55,8 @@ public:
     std::vector<double> weights;   // pair-major, weight_stride() per pair: exact, where has_weights says so
     std::vector<unsigned char> has_weights;
     std::vector<double> approximate_weights; // of the pair being prepared, weight_stride()
+    std::vector<double> band_arguments;      // its arguments in the transition band, weight_stride()
+    std::vector<std::uint32_t> band_indices; // and their neighbors, weight_stride()
     std::vector<double> approx;  // pair-major, one per k; NaN: not trusted, NOT_EVALUATED: see shares
     std::vector<double> margins; // pair-major, one per k: of approx, once it is evaluated
     std::vector<std::array<double, 4>> shares; // pair-major, one per k: approximate (L, P, S), noise / lambda1
@@ -81,6 +83,8 @@ public:
     s.weights.resize(m_sigmoids.size() * weight_stride());
     s.has_weights.resize(m_sigmoids.size());
     s.approximate_weights.resize(weight_stride());
+    s.band_arguments.resize(weight_stride());
+    s.band_indices.resize(weight_stride());
     s.approx.resize(m_sigmoids.size() * m_settings.number_of_sizes());
     s.shares.resize(m_sigmoids.size() * m_settings.number_of_sizes());
     s.margins.resize(m_sigmoids.size() * m_settings.number_of_sizes());
@@ -353,17 +357,30 @@ private:
     std::array<double, 4>* shares = &s.shares[first_slot];
     double* margins = &s.margins[first_slot];
 
-    // The weights, a batch at a time (the arguments are padded to a whole batch), without branches:
-    // in the band the cosine, clamped to [0, 1] where the exact weights lie (so that no rounding
-    // makes one negative).
+    // The weights, without branches: 1 or 0 outside the transition band, a batch at a time (the
+    // arguments are padded to a whole batch); in the band the cosine, clamped to [0, 1] where the
+    // exact weights lie (so that no rounding makes one negative), on the band's arguments gathered
+    // into whole batches: a rough surface has a few per pair, and the cosine is the costly part.
     double* const w = s.approximate_weights.data();
     for(std::size_t j = 0; j < weight_stride(); j += Batch::SizeAtCompileTime)
-    {
-      const Eigen::Map<const Batch> argument(t + j);
       Eigen::Map<Batch>(w + j) =
-        (argument >= 0.)
-          .select((0.5 * approximate_cosine<Batch>(argument) + 0.5).max(0.).min(1.),
-                  (argument == Cosine_sigmoid::WEIGHT_ONE).select(Batch::Ones(), Batch::Zero()));
+        (Eigen::Map<const Batch>(t + j) == Cosine_sigmoid::WEIGHT_ONE).select(Batch::Ones(), Batch::Zero());
+    double* const band_arguments = s.band_arguments.data();
+    std::uint32_t* const band_indices = s.band_indices.data();
+    std::size_t band_size = 0;
+    for(unsigned int j = 0; j <= k_max; ++j)
+    {
+      band_arguments[band_size] = t[j];
+      band_indices[band_size] = j;
+      band_size += t[j] >= 0. ? 1 : 0;
+    }
+    for(std::size_t b = 0; b < band_size; b += Batch::SizeAtCompileTime)
+    {
+      // the batch's entries past band_size are computed and never read
+      const Batch weight =
+        (0.5 * approximate_cosine<Batch>(Eigen::Map<const Batch>(band_arguments + b)) + 0.5).max(0.).min(1.);
+      for(std::size_t l = b; l < (std::min)(band_size, b + Batch::SizeAtCompileTime); ++l)
+        w[band_indices[l]] = weight[Eigen::Index(l - b)];
     }
 
     // Per k: sums of w, w q and w q q^T over N_i(k) (see point_columns()).
@@ -458,7 +475,7 @@ private:
   void point_columns(Scratch& s) const
   {
     const Local_neighborhood& local = s.local;
-    static_assert(decltype(s.moments)::RowsAtCompileTime == NUMBER_OF_MOMENTS, "one row per moment");
+    static_assert(int(decltype(s.moments)::RowsAtCompileTime) == int(NUMBER_OF_MOMENTS), "one row per moment");
     const unsigned int k_min = m_settings.k_min, k_max = m_settings.k_max;
     s.moments.resize(NUMBER_OF_MOMENTS, k_max + 1);
     double* const columns = s.columns.data();
