@@ -66,14 +66,14 @@ template <typename ConcurrencyTag, typename Result, typename MakeScratch, typena
 void for_each_index_in_blocks(std::size_t n, const MakeScratch& make_scratch, const Compute& compute,
                               const Sink& sink)
 {
-  // 2048 points per thread: enough that the last chunks of a block keep few threads waiting, few
-  // enough that a block of results stays small next to the input.
+  // 1024 points per thread: enough that the last chunks of a block keep few threads waiting, few
+  // enough that a block of results stays small next to the input, even at 1e5 points.
   std::size_t threads = 1;
 #if defined(_OPENMP)
   if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
     threads = static_cast<std::size_t>((std::max)(omp_get_max_threads(), 1));
 #endif
-  const std::size_t BLOCK = 2048 * threads;
+  const std::size_t BLOCK = 1024 * threads;
   std::vector<Result> results;
   for(std::size_t start = 0; start < n; start += BLOCK)
   {
