@@ -151,11 +151,11 @@ Data scan(const std::string& file)
 }
 
 // The plain loop of SPEC §5: every triple, one covariance and one eigen solve each.
-std::vector<SN::Optimal_sigmoid_neighborhood> plain_loop(const SNI::Oriented_points& input)
+std::vector<SN::Optimal_sigmoid_neighborhood> plain_loop(const SNI::Oriented_points& input, unsigned int threads)
 {
   SNI::Search_settings s = SNI::search_settings(CGAL::parameters::default_values());
   const auto sigmoids = s.sigmoids();
-  const SNI::K_neighbor_query query(input.points);
+  const SNI::Neighbor_query query(input.points);
   std::vector<SN::Optimal_sigmoid_neighborhood> result(input.size());
   struct Scratch
   {
@@ -164,7 +164,7 @@ std::vector<SN::Optimal_sigmoid_neighborhood> plain_loop(const SNI::Oriented_poi
     std::vector<double> w;
   };
   SNI::for_each_index<CGAL::Parallel_tag>(
-    input.size(), [] { return Scratch(); },
+    input.size(), threads, [] { return Scratch(); },
     [&](std::size_t i, Scratch& sc) {
       query.query(std::uint32_t(i), s.k_max, sc.neighbors);
       sc.local.assign(input, std::uint32_t(i), sc.neighbors);
@@ -265,15 +265,13 @@ Measure measure(int repeat, const std::function<double()>& work)
 
 void run(const Data& data, int threads, bool with_plain, int repeat)
 {
-#ifdef _OPENMP
-  omp_set_num_threads(threads);
-#endif
   const std::size_t n = data.points.size();
   std::vector<std::uint32_t> indices(n);
   for(std::size_t i = 0; i < n; ++i)
     indices[i] = std::uint32_t(i);
-  const auto np = CGAL::parameters::point_map(CGAL::make_property_map(data.points))
-                    .normal_map(CGAL::make_property_map(data.normals));
+  const auto np = SN::parameters::number_of_threads(unsigned(threads),
+                                                    CGAL::parameters::point_map(CGAL::make_property_map(data.points))
+                                                      .normal_map(CGAL::make_property_map(data.normals)));
   const SNI::Oriented_points input =
     SNI::copy_oriented_points(indices, CGAL::make_property_map(data.points), CGAL::make_property_map(data.normals));
   const double input_bytes = double(n) * (sizeof(Point_3) + sizeof(Vector_3));
@@ -289,9 +287,9 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
   });
   // the k-NN share: one query of k_max = 20 neighbors per point
   const Measure knn = measure(repeat, [&] {
-    const SNI::K_neighbor_query query(input.points);
+    const SNI::Neighbor_query query(input.points);
     SNI::for_each_index<CGAL::Parallel_tag>(
-      n, [] { return std::vector<SNI::Neighbor>(); },
+      n, unsigned(threads), [] { return std::vector<SNI::Neighbor>(); },
       [&](std::size_t i, std::vector<SNI::Neighbor>& found) { query.query(std::uint32_t(i), 20, found); });
     return 0.;
   });
@@ -308,7 +306,7 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
   const Measure d = measure(repeat, [&] {
     std::vector<SN::Dimensionality_features> features;
     features.reserve(n);
-    SN::compute_sigmoid_features<CGAL::Parallel_tag>(indices, SN::Cosine_sigmoid(0., SNI::PI / 3), 20,
+    SN::compute_sigmoid_features<CGAL::Parallel_tag>(indices, SN::Cosine_sigmoid(0., CGAL_PI / 3), 20,
                                                      std::back_inserter(features), np);
     return features.back().error;
   });
@@ -317,12 +315,12 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
   if(with_plain)
   {
     b = measure(repeat, [&] {
-      plain_loop(input);
+      plain_loop(input, unsigned(threads));
       return 0.;
     });
     // (a*, b*, k*, E) of (b) and (c) on every point: the number of points where they differ
     const Measure check = measure([&] {
-      const auto plain = plain_loop(input);
+      const auto plain = plain_loop(input, unsigned(threads));
       std::vector<SN::Optimal_sigmoid_neighborhood> optimal;
       SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(indices, std::back_inserter(optimal), np);
       std::size_t differ = 0;

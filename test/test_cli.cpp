@@ -7,8 +7,12 @@
 #include "test_models.h"
 
 #include <CGAL/Sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/read_polygon_mesh.h>
 #include <CGAL/IO/OFF.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO.h>
 #include <CGAL/property_map.h>
@@ -18,6 +22,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -120,6 +125,14 @@ std::string sphere_xyz(int n, bool with_normals, const std::string& name)
   }
   write_text(path(name), out.str());
   return path(name);
+}
+
+std::string number_line(const Point_3& p)
+{
+  std::ostringstream out;
+  out.precision(17);
+  out << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  return out.str();
 }
 
 const std::string HEADER = "x,y,z,nx,ny,nz,a,b,k,error,linearity,planarity,scattering,label,error_equal,k_equal";
@@ -340,4 +353,307 @@ TEST_CASE("CLI: the bad-input corpus gives the expected exit code and message", 
   // jet fitting needs 6 points: fewer estimation neighbors is a caller's error, not the file's
   CHECK_THROWS_AS(SN::read_oriented_point_set(dir + "/two_raw_points.xyz", 3), std::invalid_argument);
   CHECK_THROWS_AS(SN::read_oriented_point_set(dir + "/two_raw_points.xyz", 6), SN::Input_error);
+}
+
+// ------------------------------------------------------------------------------------------------
+// The readers behind read_oriented_point_set() and read_polygon_mesh(), one format at a time.
+
+namespace {
+
+// A square pyramid: 5 vertices, 4 triangles and the base as a quad, in each mesh format.
+const char* const PYRAMID_OFF = "OFF\n5 5 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n"
+                                "4 0 3 2 1\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n";
+const char* const PYRAMID_OBJ = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 1\n"
+                                "f 1 4 3 2\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n";
+const char* const PYRAMID_PLY = "ply\nformat ascii 1.0\nelement vertex 5\nproperty double x\nproperty double y\n"
+                                "property double z\nelement face 5\nproperty list uchar int vertex_indices\n"
+                                "end_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n"
+                                "4 0 3 2 1\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n";
+
+std::string pyramid_stl()
+{
+  const double v[5][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 1}};
+  const int t[6][3] = {{0, 3, 2}, {0, 2, 1}, {0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}};
+  std::ostringstream out;
+  out << "solid pyramid\n";
+  for(const auto& f : t)
+  {
+    out << "facet normal 0 0 0\nouter loop\n";
+    for(int c : f)
+      out << "vertex " << v[c][0] << ' ' << v[c][1] << ' ' << v[c][2] << '\n';
+    out << "endloop\nendfacet\n";
+  }
+  out << "endsolid pyramid\n";
+  return out.str();
+}
+
+// `n` points of a sphere as PLY, with or without normals.
+std::string sphere_ply(int n, bool with_normals)
+{
+  std::ostringstream out;
+  out.precision(17);
+  out << "ply\nformat ascii 1.0\nelement vertex " << n << "\nproperty double x\nproperty double y\nproperty double z\n";
+  if(with_normals)
+    out << "property double nx\nproperty double ny\nproperty double nz\n";
+  out << "end_header\n";
+  for(int i = 0; i < n; ++i)
+  {
+    const double z = 1. - 2. * (i + 0.5) / n, r = std::sqrt(1. - z * z), phi = 2.399963229728653 * i;
+    out << r * std::cos(phi) << ' ' << r * std::sin(phi) << ' ' << z;
+    if(with_normals)
+      out << ' ' << 2 * r * std::cos(phi) << ' ' << 2 * r * std::sin(phi) << ' ' << 2 * z; // not unit
+    out << '\n';
+  }
+  return out.str();
+}
+
+// Writes `text` to the scratch file `name` (once) and returns its path: every test case makes the
+// files it reads, since ctest runs each in its own process.
+std::string scratch_file(const std::string& name, const std::string& text)
+{
+  if(!exists(path(name)))
+    write_text(path(name), text);
+  return path(name);
+}
+
+std::string pyramid(const std::string& ext)
+{
+  if(ext == "off")
+    return scratch_file("pyramid.off", PYRAMID_OFF);
+  if(ext == "obj")
+    return scratch_file("pyramid.obj", PYRAMID_OBJ);
+  if(ext == "ply")
+    return scratch_file("pyramid.ply", PYRAMID_PLY);
+  return scratch_file("pyramid.STL", pyramid_stl()); // any case
+}
+
+// vertex 5 repeats vertex 1 and is used by one face instead of it; vertex 6 is used by no face
+std::string merged_off()
+{
+  return scratch_file("merged.off", "OFF\n7 5 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 1\n1 0 0\n9 9 9\n"
+                                    "4 0 3 2 1\n3 0 5 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n");
+}
+
+std::string faceless_stl() { return scratch_file("io_faceless.stl", "solid x\nendsolid x\n"); }
+std::string empty_off() { return scratch_file("io_empty.off", ""); }
+std::string huge_count_off() { return scratch_file("io_huge_count.off", "OFF\n1000000000 0 0\n0 0 0\n"); }
+
+std::string points_off(const SN::Oriented_point_set& set)
+{
+  std::string off = "OFF\n" + std::to_string(set.points.size()) + " 0 0\n";
+  for(const auto& p : set.points)
+    off += number_line(p);
+  return scratch_file("io_points.off", off);
+}
+
+std::string read_error(const std::string& file)
+{
+  try
+  {
+    SN::read_oriented_point_set(file);
+  }
+  catch(const SN::Input_error& e)
+  {
+    return e.what();
+  }
+  return "no error";
+}
+
+std::string mesh_read_error(const std::string& file)
+{
+  try
+  {
+    CGAL::Surface_mesh<Point_3> mesh;
+    SN::read_polygon_mesh(file, mesh);
+  }
+  catch(const SN::Input_error& e)
+  {
+    return e.what();
+  }
+  return "no error";
+}
+
+} // namespace
+
+TEST_CASE("IO: lower_case_extension() selects the format", "[io]")
+{
+  CHECK(SN::lower_case_extension("model.PLY") == "ply");
+  CHECK(SN::lower_case_extension("/data/v1.2/Model.Off") == "off");
+  CHECK(SN::lower_case_extension("/data/v1.2/model") == "");
+  CHECK(SN::lower_case_extension("model") == "");
+  CHECK(SN::lower_case_extension("C:\\v1.2\\model") == "");
+  CHECK(SN::lower_case_extension("archive.tar.GZ") == "gz");
+}
+
+TEST_CASE("IO: every mesh format gives the same points, normals and counts", "[io]")
+{
+  const SN::Oriented_point_set off = SN::read_oriented_point_set(pyramid("off"));
+  CHECK(off.is_mesh);
+  CHECK_FALSE(off.normals_estimated);
+  CHECK(off.points.size() == 5);
+  CHECK(off.normals.size() == 5);
+  CHECK(off.input_vertices == 5);
+  CHECK(off.merged_duplicates == 0);
+  CHECK(off.dropped_vertices == 0);
+  for(const auto& n : off.normals)
+    CHECK(n.squared_length() == Approx(1.));
+  CHECK(off.normals[4].z() == Approx(1.)); // the apex's normal points up
+  for(const char* ext : {"obj", "ply", "stl"})
+  {
+    INFO(ext);
+    const SN::Oriented_point_set other = SN::read_oriented_point_set(pyramid(ext));
+    CHECK(other.is_mesh);
+    CHECK(other.points == off.points);
+    REQUIRE(other.normals.size() == off.normals.size());
+    for(std::size_t i = 0; i < off.normals.size(); ++i)
+      CHECK(CGAL::squared_distance(Point_3(CGAL::ORIGIN) + other.normals[i], Point_3(CGAL::ORIGIN) + off.normals[i]) <
+            1e-20);
+  }
+  // STL stores triangles: 6 x 3 corners at 5 positions, merged by CGAL's reader already
+  CHECK(SN::read_oriented_point_set(pyramid("stl")).input_vertices == 5);
+}
+
+TEST_CASE("IO: mesh vertices at one position are merged into the first, unused ones dropped", "[io]")
+{
+  const SN::Oriented_point_set m = SN::read_oriented_point_set(merged_off());
+  CHECK(m.input_vertices == 7);
+  CHECK(m.merged_duplicates == 1);
+  CHECK(m.dropped_vertices == 1);
+  CHECK(m.points == SN::read_oriented_point_set(pyramid("off")).points);
+}
+
+TEST_CASE("IO: point sets in XYZ, PWN, PLY and OFF without faces", "[io]")
+{
+  const std::string xyz = sphere_xyz(50, true, "io_sphere.xyz");
+  const SN::Oriented_point_set a = SN::read_oriented_point_set(xyz);
+  CHECK_FALSE(a.is_mesh);
+  CHECK_FALSE(a.normals_estimated);
+  CHECK(a.points.size() == 50);
+  CHECK(a.normals.size() == 50);
+
+  write_text(path("io_sphere.pwn"), read_text(xyz));
+  CHECK(SN::read_oriented_point_set(path("io_sphere.pwn")).points == a.points);
+
+  write_text(path("io_sphere.ply"), sphere_ply(50, true));
+  const SN::Oriented_point_set ply = SN::read_oriented_point_set(path("io_sphere.ply"));
+  REQUIRE(ply.points.size() == 50);
+  REQUIRE(ply.normals.size() == 50);
+  for(std::size_t i = 0; i < 50; ++i)
+  {
+    CHECK(ply.points[i] == a.points[i]);
+    CHECK(ply.normals[i].squared_length() == Approx(1.)); // the file's normals have length 2
+  }
+
+  // no normals: estimated, or left out with estimation_neighbors = 0
+  write_text(path("io_raw.ply"), sphere_ply(50, false));
+  const SN::Oriented_point_set raw = SN::read_oriented_point_set(path("io_raw.ply"));
+  CHECK(raw.normals_estimated);
+  CHECK(raw.normals.size() == 50);
+  const SN::Oriented_point_set bare = SN::read_oriented_point_set(path("io_raw.ply"), 0);
+  CHECK(bare.points.size() == 50);
+  CHECK(bare.normals.empty());
+  CHECK_FALSE(bare.normals_estimated);
+
+  const SN::Oriented_point_set points = SN::read_oriented_point_set(points_off(a), 0);
+  CHECK_FALSE(points.is_mesh);
+  CHECK(points.points.size() == 50);
+
+  // duplicates: the first kept, with its normal
+  write_text(path("io_dup.xyz"), "0 0 0 0 0 1\n1 0 0 0 0 1\n0 0 0 1 0 0\n2 0 0 0 0 1\n1 0 0 0 1 0\n");
+  const SN::Oriented_point_set dup = SN::read_oriented_point_set(path("io_dup.xyz"));
+  CHECK(dup.input_vertices == 5);
+  CHECK(dup.merged_duplicates == 2);
+  REQUIRE(dup.points.size() == 3);
+  CHECK(dup.points[2] == Point_3(2, 0, 0));
+  CHECK(dup.normals[0] == Vector_3(0, 0, 1));
+  CHECK(dup.normals[1] == Vector_3(0, 0, 1));
+}
+
+TEST_CASE("IO: the dispatcher's errors", "[io][bad-input]")
+{
+  write_text(path("io_model.xyzw"), "1 2 3\n");
+  write_text(path("io_noext"), "1 2 3\n");
+  write_text(path("io_faceless.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  write_text(path("io_bad_ply.ply"), "ply\nformat ascii 1.0\nproperty double x\nelement vertex 1\nend_header\n1\n");
+  CHECK(read_error(path("io_missing.xyz")) == "cannot open the file");
+  CHECK(read_error(scratch()) == "is a folder, not a file");
+  CHECK(read_error(empty_off()) == "the file is empty");
+  CHECK(read_error(path("io_model.xyzw")) == "unknown format '.xyzw': expected .off, .obj, .ply, .stl, .xyz or .pwn");
+  CHECK(read_error(path("io_noext")).find("unknown format '(no extension)'") == 0);
+  CHECK(read_error(path("io_faceless.obj")).find("cannot parse the file as obj, or it has no faces") == 0);
+  CHECK(read_error(faceless_stl()) == "no faces in the file");
+  CHECK(read_error(path("io_bad_ply.ply")) == "cannot parse the file as ply (a property before any element, line 3)");
+  CHECK(read_error(huge_count_off()).find("the header announces 1000000000 vertices") == 0);
+  CHECK_THROWS_AS(SN::read_oriented_point_set(pyramid("off"), 5), std::invalid_argument);
+}
+
+TEST_CASE("IO: read_polygon_mesh() reads as CGAL's read_polygon_mesh(), through the checked readers", "[io]")
+{
+  const std::string cube = cube_off();
+  CGAL::Surface_mesh<Point_3> ours, cgal;
+  SN::read_polygon_mesh(cube, ours);
+  REQUIRE(CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(cube, cgal));
+  CGAL::Polygon_mesh_processing::remove_isolated_vertices(cgal);
+  cgal.collect_garbage();
+  REQUIRE(ours.number_of_vertices() == 152);
+  REQUIRE(ours.number_of_vertices() == cgal.number_of_vertices());
+  CHECK(ours.number_of_faces() == cgal.number_of_faces());
+  auto o = ours.vertices().begin();
+  for(auto c = cgal.vertices().begin(); c != cgal.vertices().end(); ++c, ++o)
+    CHECK(ours.point(*o) == cgal.point(*c));
+
+  // the isolated vertex of merged.off is removed
+  CGAL::Surface_mesh<Point_3> merged;
+  SN::read_polygon_mesh(merged_off(), merged);
+  CHECK(merged.number_of_vertices() == 5);
+  CHECK(merged.number_of_faces() == 5);
+
+  const std::string xyz = sphere_xyz(50, true, "io_sphere.xyz");
+  CHECK(mesh_read_error(xyz) == "unknown format '.xyz': expected .off, .obj, .ply or .stl");
+  CHECK(mesh_read_error(points_off(SN::read_oriented_point_set(xyz))) == "no faces in the file");
+  CHECK(mesh_read_error(empty_off()) == "the file is empty");
+  CHECK(mesh_read_error(huge_count_off()).find("the header announces") == 0);
+  write_text(path("io_huge.off"), "OFF\n3 1 0\n0 0 0\n1 1e200 0\n0 1 0\n3 0 1 2\n");
+  CHECK(mesh_read_error(path("io_huge.off")).find("vertex 1 has a coordinate beyond 1e150") == 0);
+}
+
+TEST_CASE("CLI: every command reads through the package's reader", "[cli][bad-input]")
+{
+  // filter-normals and denoise-experiment give the reader's one line, exit code 2 and no output
+  const Run filter = run("filter-normals " + faceless_stl() + " -o " + path("f.xyz"));
+  CHECK(filter.exit_code == 2);
+  CHECK(filter.err.find("io_faceless.stl: no faces in the file") != std::string::npos);
+  CHECK_FALSE(exists(path("f.xyz")));
+  const Run denoise = run("denoise-experiment " + sphere_xyz(50, true, "io_sphere.xyz") + " -o " + path("denoise_bad"));
+  CHECK(denoise.exit_code == 2);
+  CHECK(denoise.err.find("unknown format '.xyz'") != std::string::npos);
+  CHECK(std::count(denoise.err.begin(), denoise.err.end(), '\n') == 1);
+  CHECK_FALSE(exists(path("denoise_bad/table4.md")));
+  // a tolerance outside [0, pi) is refused by both commands that take one
+  const std::string input = sphere_xyz(60, true, "tolerance.xyz");
+  CHECK(run("optimal " + input + " -o " + path("t.csv") + " --angle-tolerance 3.1416").exit_code == 2);
+  CHECK(run("filter-normals " + input + " -o " + path("t.xyz") + " --angle-tolerance -1").exit_code == 2);
+  CHECK(run("optimal " + input + " -o " + path("t.csv") + " --angle-tolerance 3.14159").exit_code == 0);
+}
+
+TEST_CASE("CLI: the tool is a thin shell: no internal names, no shell, no global thread count, no host path",
+          "[cli]")
+{
+  const std::filesystem::path tools = std::filesystem::path(SN_TEST_DATA_DIR) / ".." / ".." / "tools";
+  std::size_t files = 0;
+  for(const auto& entry : std::filesystem::recursive_directory_iterator(tools))
+  {
+    const std::string ext = entry.path().extension().string();
+    if(!entry.is_regular_file() || (ext != ".h" && ext != ".cpp"))
+      continue;
+    ++files;
+    INFO(entry.path().string());
+    const std::string text = read_text(entry.path().string());
+    CHECK(text.find("internal::") == std::string::npos);
+    CHECK(text.find("std::system") == std::string::npos);
+    CHECK(text.find("omp_set_num_threads") == std::string::npos);
+    CHECK(text.find("/usr/share") == std::string::npos);
+    CHECK(text.find("3.14159") == std::string::npos);
+  }
+  CHECK(files >= 10);
 }

@@ -23,7 +23,7 @@
 namespace SN = CGAL::Sigmoid_neighborhoods;
 typedef CGAL::Simple_cartesian<double>::Point_3 Point;
 
-static const double pi = SN::internal::PI;
+static const double pi = CGAL_PI;
 
 TEST_CASE("sigmoid below, at and above a and b", "[sigmoid]")
 {
@@ -345,11 +345,11 @@ TEST_CASE("the polynomial cosine of the approximations is within 6e-16 of std::c
 {
   // the bound of internal/approximate_cosine.h, and the weight error the margins assume with a factor 4
   std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> angle(0., SN::internal::PI);
+  std::uniform_real_distribution<double> angle(0., CGAL_PI);
   double worst_cosine = 0., worst_weight = 0.;
   for(int i = 0; i <= 2000000; ++i)
   {
-    const double t = i <= 1000000 ? i * (SN::internal::PI / 1000000) : angle(rng);
+    const double t = i <= 1000000 ? i * (CGAL_PI / 1000000) : angle(rng);
     const double fast = SN::internal::approximate_cosine(t), exact = std::cos(t);
     worst_cosine = (std::max)(worst_cosine, std::abs(fast - exact));
     worst_weight = (std::max)(worst_weight, std::abs((0.5 * fast + 0.5) - (0.5 * exact + 0.5)));
@@ -358,7 +358,7 @@ TEST_CASE("the polynomial cosine of the approximations is within 6e-16 of std::c
   CHECK(worst_weight <= SN::internal::APPROXIMATE_WEIGHT_ERROR / 4);
   // vectorized, the same values
   Eigen::Array<double, 8, 1> t;
-  t << 0., 0.1, 0.5, 1., 1.5707963267948966, 2., 3., SN::internal::PI;
+  t << 0., 0.1, 0.5, 1., 1.5707963267948966, 2., 3., CGAL_PI;
   const Eigen::Array<double, 8, 1> batch = SN::internal::approximate_cosine<Eigen::Array<double, 8, 1>>(t);
   for(int i = 0; i < 8; ++i)
     CHECK(std::abs(batch[i] - std::cos(t[i])) <= 6e-16);
@@ -369,21 +369,21 @@ TEST_CASE("the polynomial cosine of the approximations is within 6e-16 of std::c
 TEST_CASE("sigmoid cases and cosine arguments", "[sigmoid]")
 {
   typedef SN::Cosine_sigmoid S;
-  const S band(SN::internal::PI / 6, SN::internal::PI / 2);
+  const S band(CGAL_PI / 6, CGAL_PI / 2);
   CHECK(band.transition_argument(0.) == S::WEIGHT_ONE);
   CHECK(band.transition_argument(0.5) == S::WEIGHT_ONE);
-  CHECK(band.transition_argument(SN::internal::PI / 6) == 0.);
-  CHECK(band.transition_argument(SN::internal::PI / 3) == Approx(SN::internal::PI / 2).epsilon(1e-15));
-  CHECK(band.transition_argument(SN::internal::PI / 2) == Approx(SN::internal::PI).epsilon(1e-15));
+  CHECK(band.transition_argument(CGAL_PI / 6) == 0.);
+  CHECK(band.transition_argument(CGAL_PI / 3) == Approx(CGAL_PI / 2).epsilon(1e-15));
+  CHECK(band.transition_argument(CGAL_PI / 2) == Approx(CGAL_PI).epsilon(1e-15));
   CHECK(band.transition_argument(2.) == S::WEIGHT_ZERO);
   const S sharp(1., 1.);
   CHECK(sharp.transition_argument(1.) == S::WEIGHT_ONE);
   CHECK(sharp.transition_argument(std::nextafter(1., 2.)) == S::WEIGHT_ZERO);
   CHECK(S::weight_of_argument(S::WEIGHT_ONE) == 1.);
   CHECK(S::weight_of_argument(S::WEIGHT_ZERO) == 0.);
-  CHECK(S::weight_of_argument(SN::internal::PI / 2) == 0.5);
+  CHECK(S::weight_of_argument(CGAL_PI / 2) == 0.5);
   // the weight of an angle is the weight of its argument, bit for bit
-  for(double x = 0.; x <= SN::internal::PI; x += 0.01)
+  for(double x = 0.; x <= CGAL_PI; x += 0.01)
   {
     const double w = band(x), v = S::weight_of_argument(band.transition_argument(x));
     CHECK(std::memcmp(&w, &v, sizeof(double)) == 0);

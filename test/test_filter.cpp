@@ -24,9 +24,6 @@
 #include <utility>
 #include <vector>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace {
 
@@ -41,7 +38,7 @@ typedef CGAL::Surface_mesh<Point> Mesh;
 typedef CGAL::First_of_pair_property_map<Point_with_normal> Point_map;
 typedef CGAL::Second_of_pair_property_map<Point_with_normal> Normal_map;
 
-const double pi = SN::internal::PI;
+const double pi = CGAL_PI;
 
 double angle(const Vector& n, const Vector& m)
 {
@@ -123,15 +120,6 @@ std::vector<std::vector<std::size_t>> brute_force_balls(const Points& points, do
       lists[i].push_back(f.second);
   }
   return lists;
-}
-
-void set_threads(int n)
-{
-#ifdef _OPENMP
-  omp_set_num_threads(n);
-#else
-  (void)n;
-#endif
 }
 
 } // namespace
@@ -246,6 +234,22 @@ TEST_CASE("filter: the caller's neighborhoods give the internal result when they
     for(std::size_t i = 0; i < points.size(); ++i)
       equal += (internal[i].second == given[i].second);
     CHECK(equal == points.size());
+    // the same lists in compressed rows (neighbor_indices, neighbor_offsets)
+    std::vector<int> indices;
+    std::vector<std::size_t> offsets(1, 0);
+    for(const auto& list : lists)
+    {
+      indices.insert(indices.end(), list.begin(), list.end());
+      offsets.push_back(indices.size());
+    }
+    Points rows = points;
+    SN::filter_normals<CGAL::Sequential_tag>(
+      rows, SNP::neighbor_indices(indices, SNP::neighbor_offsets(offsets, SNP::adaptive_neighborhood_size(adaptive,
+              CGAL::parameters::number_of_iterations(10).point_map(Point_map()).normal_map(Normal_map())))));
+    equal = 0;
+    for(std::size_t i = 0; i < points.size(); ++i)
+      equal += (internal[i].second == rows[i].second);
+    CHECK(equal == points.size());
   }
 }
 
@@ -330,11 +334,11 @@ TEST_CASE("filter: bit-identical on 1 and 2 threads and sequentially", "[filter]
   const Points points = noisy_edge(0.2, 7, truth);
   for(bool adaptive : {false, true})
   {
-    auto run = [&](int threads, bool parallel) {
-      set_threads(threads);
+    auto run = [&](unsigned int threads, bool parallel) {
       Points copy = points;
-      const auto np = SNP::adaptive_neighborhood_size(adaptive, CGAL::parameters::number_of_iterations(8)
-                                                                  .point_map(Point_map()).normal_map(Normal_map()));
+      const auto np = SNP::number_of_threads(
+        threads, SNP::adaptive_neighborhood_size(
+                   adaptive, CGAL::parameters::number_of_iterations(8).point_map(Point_map()).normal_map(Normal_map())));
       if(parallel)
         SN::filter_normals<SN::Parallel_if_available_tag>(copy, np);
       else
@@ -345,7 +349,6 @@ TEST_CASE("filter: bit-identical on 1 and 2 threads and sequentially", "[filter]
     CHECK(one == two);
     CHECK(one == sequential);
   }
-  set_threads(2);
 }
 
 TEST_CASE("filter: the mesh overload equals the point range on the mesh's vertices", "[filter][mesh]")

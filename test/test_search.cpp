@@ -7,16 +7,13 @@
 #include "test_models.h"
 
 #include <CGAL/Sigmoid_neighborhoods.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/K_neighbor_query.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/property_map.h>
 #include <CGAL/Random.h>
 
 #include <catch2/catch.hpp>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #include <boost/property_map/property_map.hpp>
 
@@ -39,7 +36,7 @@ typedef std::vector<Point_with_normal> Point_list;
 typedef CGAL::First_of_pair_property_map<Point_with_normal> Point_map;
 typedef CGAL::Second_of_pair_property_map<Point_with_normal> Normal_map;
 
-static const double pi = SN::internal::PI;
+static const double pi = CGAL_PI;
 static const double inf = std::numeric_limits<double>::infinity();
 
 static auto maps() { return CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()); }
@@ -173,7 +170,7 @@ TEST_CASE("k nearest neighbors are ordered by distance, ties by index", "[neighb
   // shuffle indices so that index order is not the grid order
   std::mt19937_64 rng(5);
   std::shuffle(points.begin(), points.end(), rng);
-  const SN::internal::K_neighbor_query query(points);
+  const SN::internal::Neighbor_query query(points);
   std::vector<SN::internal::Neighbor> found;
   for(std::uint32_t i = 0; i < points.size(); ++i)
     for(unsigned k : {1u, 4u, 8u, 12u, 20u})
@@ -199,10 +196,10 @@ TEST_CASE("all-ones weights are recognised exactly where the sigmoid gives 1 eve
   const Point_list points = folded_sheet(12, 3);
   const SN::internal::Oriented_points input =
     SN::internal::copy_oriented_points(points, Point_map(), Normal_map());
-  const SN::internal::K_neighbor_query query(input.points);
+  const SN::internal::Neighbor_query query(input.points);
   std::vector<SN::internal::Neighbor> neighbors;
   SN::internal::Local_neighborhood local;
-  const double pi = SN::internal::PI;
+  const double pi = CGAL_PI;
   std::size_t all_ones = 0, evaluated = 0;
   for(std::uint32_t i = 0; i < input.size(); i += 5)
   {
@@ -557,11 +554,11 @@ TEST_CASE("1 and 2 threads give bit-identical results", "[threads]")
   const Point_list points = folded_sheet(20, 6);
   const auto sequential = optimal(points);
 #ifdef _OPENMP
-  for(int threads : {1, 2})
+  for(unsigned int threads : {1u, 2u, 3u})
   {
-    omp_set_num_threads(threads);
     std::vector<SN::Optimal_sigmoid_neighborhood> parallel;
-    SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(points, std::back_inserter(parallel), maps());
+    SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(
+      points, std::back_inserter(parallel), SN::parameters::number_of_threads(threads, maps()));
     REQUIRE(parallel.size() == sequential.size());
     for(std::size_t i = 0; i < points.size(); ++i)
       CHECK(same_record(parallel[i], sequential[i]));
@@ -569,4 +566,130 @@ TEST_CASE("1 and 2 threads give bit-identical results", "[threads]")
 #else
   WARN("built without OpenMP: only the sequential path is tested");
 #endif
+}
+
+// The k_max nearest other points of every point by brute force (SPEC §2: distance, then index),
+// in compressed rows as a caller (pgeof, Open3D, a GPU k-NN) would hand them over.
+static void brute_force_rows(const Point_list& points, unsigned int k, std::vector<std::uint32_t>& indices,
+                             std::vector<std::size_t>& offsets)
+{
+  indices.clear();
+  offsets.assign(1, 0);
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    std::vector<std::pair<double, std::uint32_t>> all;
+    for(std::size_t j = 0; j < points.size(); ++j)
+      if(j != i)
+        all.emplace_back(CGAL::squared_distance(points[i].first, points[j].first), std::uint32_t(j));
+    std::sort(all.begin(), all.end());
+    for(unsigned int t = 0; t < k; ++t)
+      indices.push_back(all[t].second);
+    offsets.push_back(indices.size());
+  }
+}
+
+TEST_CASE("caller-computed neighborhoods in compressed rows give the kd-tree's results", "[neighborhoods]")
+{
+  const Point_list points = folded_sheet(12, 4);
+  std::vector<std::uint32_t> indices;
+  std::vector<std::size_t> offsets;
+  brute_force_rows(points, 24, indices, offsets); // longer rows than k_max: their first k_max count
+
+  const auto tree = optimal(points);
+  std::vector<SN::Optimal_sigmoid_neighborhood> given;
+  SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(
+    points, std::back_inserter(given), SNP::neighbor_indices(indices, SNP::neighbor_offsets(offsets, maps())));
+  REQUIRE(given.size() == tree.size());
+  for(std::size_t i = 0; i < tree.size(); ++i)
+    CHECK(same_record(given[i], tree[i]));
+
+  std::vector<SN::Dimensionality_features> tree_features, given_features;
+  SN::compute_sigmoid_features<CGAL::Sequential_tag>(points, SN::Cosine_sigmoid(0., pi / 3), 9,
+                                                     std::back_inserter(tree_features), maps());
+  SN::compute_sigmoid_features<CGAL::Sequential_tag>(
+    points, SN::Cosine_sigmoid(0., pi / 3), 9, std::back_inserter(given_features),
+    SNP::neighbor_indices(indices, SNP::neighbor_offsets(offsets, maps())));
+  REQUIRE(given_features.size() == tree_features.size());
+  for(std::size_t i = 0; i < tree_features.size(); ++i)
+    CHECK(std::memcmp(&given_features[i].error, &tree_features[i].error, sizeof(double)) == 0);
+
+  // Rows in another order are another neighborhood: the caller's order is N_i(k)'s.
+  std::vector<std::uint32_t> reversed = indices;
+  for(std::size_t i = 0; i + 1 < offsets.size(); ++i)
+    std::reverse(reversed.begin() + std::ptrdiff_t(offsets[i]), reversed.begin() + std::ptrdiff_t(offsets[i + 1]));
+  std::vector<SN::Dimensionality_features> far_features;
+  SN::compute_sigmoid_features<CGAL::Sequential_tag>(
+    points, SN::Cosine_sigmoid(0., pi / 3), 9, std::back_inserter(far_features),
+    SNP::neighbor_indices(reversed, SNP::neighbor_offsets(offsets, maps())));
+  std::size_t differ = 0;
+  for(std::size_t i = 0; i < tree_features.size(); ++i)
+    differ += far_features[i].eigenvalues != tree_features[i].eigenvalues;
+  CHECK(differ > tree_features.size() / 2);
+}
+
+TEST_CASE("caller-computed neighborhoods are checked", "[neighborhoods][bad-input]")
+{
+  const Point_list points = folded_sheet(6, 2);
+  std::vector<std::uint32_t> indices;
+  std::vector<std::size_t> offsets;
+  brute_force_rows(points, 20, indices, offsets);
+  auto run = [&](const std::vector<std::uint32_t>& ind, const std::vector<std::size_t>& off) {
+    std::vector<SN::Optimal_sigmoid_neighborhood> out;
+    SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(
+      points, std::back_inserter(out), SNP::neighbor_indices(ind, SNP::neighbor_offsets(off, maps())));
+    return out.size();
+  };
+  CHECK(run(indices, offsets) == points.size());
+  // rows shorter than k_max
+  std::vector<std::uint32_t> short_indices;
+  std::vector<std::size_t> short_offsets;
+  brute_force_rows(points, 10, short_indices, short_offsets);
+  CHECK_THROWS_WITH(run(short_indices, short_offsets), Catch::Contains("at least 20 neighbors per point, one has 10"));
+  // an offset missing, a decreasing offset, an index out of range, the point itself
+  std::vector<std::size_t> missing(offsets.begin(), offsets.end() - 1);
+  CHECK_THROWS_WITH(run(indices, missing), Catch::Contains("one entry per point and one more"));
+  std::vector<std::size_t> decreasing = offsets;
+  std::swap(decreasing[3], decreasing[4]);
+  CHECK_THROWS_WITH(run(indices, decreasing), Catch::Contains("must not decrease"));
+  std::vector<std::uint32_t> out_of_range = indices;
+  out_of_range[25] = std::uint32_t(points.size());
+  CHECK_THROWS_WITH(run(out_of_range, offsets), Catch::Contains("neighborhood of point 1: index") &&
+                                                    Catch::Contains("is out of range"));
+  std::vector<std::uint32_t> itself = indices;
+  itself[offsets[2]] = 2;
+  CHECK_THROWS_WITH(run(itself, offsets), Catch::Contains("neighborhood of point 2 contains the point itself"));
+}
+
+TEST_CASE("Parallel_tag: an exception at one index reaches the caller as that exception", "[threads]")
+{
+  struct Custom_error : std::runtime_error
+  {
+    using std::runtime_error::runtime_error;
+  };
+  std::vector<unsigned char> visited(1000, 0);
+  auto body = [&](std::size_t i, int&) {
+    if(i == 377)
+      throw Custom_error("index 377");
+    visited[i] = 1;
+  };
+  for(unsigned int threads : {1u, 2u})
+  {
+    try
+    {
+      SN::internal::for_each_index<SN::Parallel_if_available_tag>(1000, threads, [] { return 0; }, body);
+      FAIL("no exception");
+    }
+    catch(const Custom_error& e)
+    {
+      CHECK(std::string(e.what()) == "index 377");
+    }
+  }
+  // a std::bad_alloc in a thread's scratch space, too
+  CHECK_THROWS_AS(SN::internal::for_each_index<SN::Parallel_if_available_tag>(
+                    100, 2, []() -> std::vector<double> { throw std::bad_alloc(); },
+                    [](std::size_t, std::vector<double>&) {}),
+                  std::bad_alloc);
+  CHECK(SN::internal::thread_count<SN::Parallel_if_available_tag>(3) ==
+        (std::is_same<SN::Parallel_if_available_tag, CGAL::Parallel_tag>::value ? 3u : 1u));
+  CHECK(SN::internal::thread_count<CGAL::Sequential_tag>(3) == 1u);
 }

@@ -9,6 +9,10 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_H
 
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/concurrency.h>
+#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/Mesh_points_summary.h>
+#include <CGAL/Sigmoid_neighborhoods/Point_evaluation.h>
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
 #include <CGAL/Sigmoid_neighborhoods/weighted_covariance.h>
 #include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>

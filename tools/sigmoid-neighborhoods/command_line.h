@@ -1,25 +1,47 @@
 // Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Small helpers shared by the subcommands: option parsing, exit codes, atomic output files.
+// What the subcommands share: option parsing and validation, exit codes, reading an input with a
+// one-line error, output folders and atomic output files, numbers, and running the plotting scripts.
 
 #ifndef SIGMOID_NEIGHBORHOODS_TOOL_COMMAND_LINE_H
 #define SIGMOID_NEIGHBORHOODS_TOOL_COMMAND_LINE_H
 
+#include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
+
+#include <CGAL/number_type_config.h>
+
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iostream>
 #include <map>
+#include <numeric>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+extern char** environ;
+
+// Where the plotting scripts are in the source tree (CMake gives it); an installed tool looks in
+// share/sigmoid-neighborhoods next to its bin/ first.
+#ifndef SIGMOID_NEIGHBORHOODS_SCRIPT_DIR
+#define SIGMOID_NEIGHBORHOODS_SCRIPT_DIR "."
+#endif
+
 namespace sigmoid_tool {
+
+namespace fs = std::filesystem;
 
 enum Exit_code
 {
@@ -99,6 +121,9 @@ public:
     return v;
   }
 
+  // Integer options are counts: sizes, iterations, threads; a larger one is a typing error.
+  static constexpr long LARGEST_UNSIGNED_OPTION = 1000000;
+
   unsigned int get_unsigned(const std::string& name, unsigned int fallback) const
   {
     if(!has(name))
@@ -107,10 +132,13 @@ public:
     char* end = nullptr;
     errno = 0;
     const long v = std::strtol(text.c_str(), &end, 10);
-    if(text.empty() || *end != '\0' || errno != 0 || v < 0 || v > 1000000)
+    if(text.empty() || *end != '\0' || errno != 0 || v < 0 || v > LARGEST_UNSIGNED_OPTION)
       throw Usage_error("option " + name + " needs a non-negative integer, got '" + text + "'");
     return static_cast<unsigned int>(v);
   }
+
+  // `-o PATH` or `--output PATH`; empty when absent.
+  std::string output() const { return get("-o", get("--output")); }
 
 private:
   static bool contains(const std::vector<std::string>& v, const std::string& s)
@@ -130,6 +158,80 @@ private:
   std::map<std::string, std::string> m_options;
   std::vector<std::string> m_positional;
 };
+
+// Prints `usage` when -h or --help is given: the command then returns EXIT_OK.
+inline bool print_help(const Arguments& args, const char* usage)
+{
+  if(!args.has("-h") && !args.has("--help"))
+    return false;
+  std::cout << usage;
+  return true;
+}
+
+// The INPUT and the -o OUTPUT of a command on one model; `output_description` names what -o takes.
+inline std::pair<std::string, std::string> one_input_and_output(const Arguments& args, const std::string& command,
+                                                                const std::string& output_description)
+{
+  if(args.positional().size() != 1)
+    throw Usage_error(command + " needs exactly one INPUT");
+  const std::string output = args.output();
+  if(output.empty())
+    throw Usage_error(command + " needs -o " + output_description);
+  return {args.positional()[0], output};
+}
+
+// --threads N: the threads of every parallel call (0: OpenMP's default).
+inline unsigned int read_threads(const Arguments& args) { return args.get_unsigned("--threads", 0); }
+
+// --angle-tolerance: a tolerance on angles in radians, in [0, pi).
+inline double read_angle_tolerance(const Arguments& args, double fallback)
+{
+  const double tolerance = args.get_double("--angle-tolerance", fallback);
+  if(!(tolerance >= 0. && tolerance < CGAL_PI))
+    throw Usage_error("--angle-tolerance must be in [0, pi)");
+  return tolerance;
+}
+
+// Runs `read()`; a file it cannot use (Input_error) becomes a Usage_error that names `path`.
+template <typename Read>
+auto read_input(const std::string& path, const Read& read) -> decltype(read())
+{
+  try
+  {
+    return read();
+  }
+  catch(const CGAL::Sigmoid_neighborhoods::Input_error& e)
+  {
+    throw Usage_error(path + ": " + e.what());
+  }
+}
+
+// The indices 0, ..., n - 1: the point range of the library calls over a model's points.
+inline std::vector<std::uint32_t> point_indices(std::size_t n)
+{
+  std::vector<std::uint32_t> indices(n);
+  std::iota(indices.begin(), indices.end(), std::uint32_t(0));
+  return indices;
+}
+
+// 17 significant digits: every double reads back to the same bits.
+inline std::string number17(double v)
+{
+  char buffer[40];
+  std::snprintf(buffer, sizeof(buffer), "%.17g", v);
+  return buffer;
+}
+
+inline void print_number(std::ostream& out, double v) { out << number17(v); }
+
+// Creates `folder` (and `subfolder` in it, when given) and their parents unless they exist.
+inline void create_output_folder(const std::string& folder, const std::string& subfolder = std::string())
+{
+  std::error_code ec;
+  fs::create_directories(fs::path(folder) / subfolder, ec);
+  if(ec)
+    throw Usage_error("cannot create " + folder + ": " + ec.message());
+}
 
 // The suffix of write_file_atomically's temporary files: ".tmp." and the writer's process id.
 inline bool is_temporary_file_name(const std::string& name)
@@ -175,6 +277,51 @@ inline void write_file_atomically(const std::string& path, const std::function<v
     std::remove(temporary.c_str());
     throw Usage_error("cannot write " + path + ": " + reason);
   }
+}
+
+// A script of the tool: $SIGMOID_NEIGHBORHOODS_SCRIPTS, else share/sigmoid-neighborhoods next to
+// the executable once installed, else the source tree.
+inline std::string find_tool_script(const std::string& name)
+{
+  std::vector<fs::path> candidates;
+  if(const char* env = std::getenv("SIGMOID_NEIGHBORHOODS_SCRIPTS"))
+    candidates.push_back(fs::path(env) / name);
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if(!ec)
+    candidates.push_back(exe.parent_path().parent_path() / "share" / "sigmoid-neighborhoods" / name);
+  candidates.push_back(fs::path(SIGMOID_NEIGHBORHOODS_SCRIPT_DIR) / name);
+  for(const auto& c : candidates)
+    if(fs::exists(c, ec))
+      return c.string();
+  throw Usage_error("cannot find " + name + " (set SIGMOID_NEIGHBORHOODS_SCRIPTS)");
+}
+
+inline std::string python_interpreter()
+{
+  // Debian's interpreter has matplotlib; a python3 earlier on PATH may not.
+  return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+}
+
+// Runs the plotting script `name` of the tool with `arguments` (no shell); true when it succeeds.
+inline bool run_python_script(const std::string& name, const std::vector<std::string>& arguments)
+{
+  std::vector<std::string> words = {python_interpreter(), find_tool_script(name)};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for(std::string& word : words)
+    argv.push_back(&word[0]);
+  argv.push_back(nullptr);
+  std::cout.flush();
+  std::cerr.flush();
+  pid_t pid = 0;
+  if(::posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0)
+    return false;
+  int status = 0;
+  while(::waitpid(pid, &status, 0) < 0)
+    if(errno != EINTR)
+      return false;
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
 } // namespace sigmoid_tool

@@ -12,6 +12,7 @@
 #include "optimal_command.h"
 
 #include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 #include <CGAL/Real_timer.h>
 
 #include <unistd.h>
@@ -45,10 +46,8 @@ struct Model_file
 
 inline bool is_model_extension(const fs::path& p)
 {
-  std::string ext = p.extension().string();
-  for(char& c : ext)
-    c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".off" || ext == ".obj" || ext == ".ply" || ext == ".stl" || ext == ".xyz" || ext == ".pwn";
+  const std::string ext = SN::lower_case_extension(p.extension().string());
+  return ext == "off" || ext == "obj" || ext == "ply" || ext == "stl" || ext == "xyz" || ext == "pwn";
 }
 
 inline std::vector<Model_file> find_models(const std::vector<std::string>& inputs)
@@ -158,17 +157,11 @@ inline std::vector<SN::Point_evaluation> evaluate_model(const SN::Oriented_point
                                                         const Search_options& o, const Evaluation_settings& s)
 {
   namespace SNP = SN::parameters;
-  std::vector<std::uint32_t> indices(model.points.size());
-  for(std::size_t i = 0; i < indices.size(); ++i)
-    indices[i] = std::uint32_t(i);
   std::vector<SN::Point_evaluation> result;
   result.reserve(model.points.size());
   SN::evaluate_sigmoid_neighborhoods<SN::Parallel_if_available_tag>(
-    indices, std::back_inserter(result),
-    SNP::k_min(o.k_min, SNP::k_max(o.k_max, SNP::barycenter(o.barycenter, SNP::angle_tolerance(o.angle_tolerance,
-      SNP::cut_off_angle(s.cut_off_angle, SNP::fixed_k(s.fixed_k))))))
-      .point_map(CGAL::make_property_map(model.points))
-      .normal_map(CGAL::make_property_map(model.normals)));
+    point_indices(model.points.size()), std::back_inserter(result),
+    with_search_options(o, SNP::cut_off_angle(s.cut_off_angle, SNP::fixed_k(s.fixed_k, model_maps(model)))));
   return result;
 }
 
@@ -246,12 +239,9 @@ inline int run_evaluate(int argc, char** argv)
                        {"-o", "--output", "--repository", "--shard", "--threads", "--barycenter", "--k-min", "--k-max",
                         "--fixed-k", "--angle-tolerance"},
                        {"-h", "--help", "--resume", "--per-point", "--only-with-normals"});
-  if(args.has("-h") || args.has("--help"))
-  {
-    std::cout << EVALUATE_USAGE;
+  if(print_help(args, EVALUATE_USAGE))
     return EXIT_OK;
-  }
-  const std::string outdir = args.get("-o", args.get("--output"));
+  const std::string outdir = args.output();
   if(outdir.empty())
     throw Usage_error("evaluate needs -o OUTDIR");
   if(args.positional().empty())
@@ -265,7 +255,7 @@ inline int run_evaluate(int argc, char** argv)
     throw Usage_error("--fixed-k must lie in [--k-min, --k-max]");
   settings.barycenter = options.barycenter == SN::Barycenter::WEIGHTED ? "weighted" : "unweighted";
   settings.angle_tolerance = options.angle_tolerance;
-  settings.cut_off_angle = std::acos(0.9);
+  settings.cut_off_angle = std::acos(EVALUATION_CUT_OFF_COSINE);
   settings.a_grid = settings.b_grid = SN::default_angle_grid();
 
   std::vector<Model_file> models = find_models(args.positional());
@@ -284,10 +274,7 @@ inline int run_evaluate(int argc, char** argv)
   if(repository.empty())
     repository = fs::absolute(args.positional().front()).lexically_normal().parent_path().filename().string();
 
-  std::error_code ec;
-  fs::create_directories(fs::path(outdir) / "models", ec);
-  if(ec)
-    throw Usage_error("cannot create " + outdir + ": " + ec.message());
+  create_output_folder(outdir, "models");
   remove_temporary_files(outdir);
 
   std::uintmax_t total_bytes = 0;
@@ -377,12 +364,9 @@ inline int run_evaluate(int argc, char** argv)
 inline int run_merge(int argc, char** argv)
 {
   const Arguments args(argc, argv, 2, {"-o", "--output", "--repository"}, {"-h", "--help"});
-  if(args.has("-h") || args.has("--help"))
-  {
-    std::cout << MERGE_USAGE;
+  if(print_help(args, MERGE_USAGE))
     return EXIT_OK;
-  }
-  const std::string outdir = args.get("-o", args.get("--output"));
+  const std::string outdir = args.output();
   if(outdir.empty() || args.positional().empty())
     throw Usage_error("merge needs OUTDIR... -o OUTDIR");
   std::string repository = args.get("--repository");
@@ -409,10 +393,8 @@ inline int run_merge(int argc, char** argv)
   const auto twice = std::adjacent_find(names.begin(), names.end());
   if(twice != names.end())
     throw Usage_error("model " + *twice + " is in two of the folders to merge");
+  create_output_folder(outdir, "models");
   std::error_code ec;
-  fs::create_directories(fs::path(outdir) / "models", ec);
-  if(ec)
-    throw Usage_error("cannot create " + outdir + ": " + ec.message());
   // Copy the model files, so that the merged folder is an evaluation folder like any other.
   for(const auto& folder : args.positional())
   {

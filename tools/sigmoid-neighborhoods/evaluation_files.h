@@ -26,6 +26,10 @@ namespace sigmoid_tool {
 namespace SN = CGAL::Sigmoid_neighborhoods;
 namespace fs = std::filesystem;
 
+// The sharp cut-off of the evaluation, `a = b = arccos(0.9)`: the cut-off the paper compares with
+// (and Yadav et al.'s normal filter uses).
+constexpr double EVALUATION_CUT_OFF_COSINE = 0.9;
+
 // What must be equal for two evaluations to merge.
 struct Evaluation_settings
 {
@@ -57,15 +61,9 @@ struct Model_result
 
 inline void write_error_statistics(Json_writer& w, const char* key, const SN::Error_statistics& s)
 {
-  w.begin_object(key)
-    .value("count", s.count)
-    .value("failures", s.failures)
-    .value("sum", s.sum)
-    .value("sum_of_squares", s.sum_of_squares)
-    .value("min", s.min)
-    .value("max", s.max)
-    .value("mean", s.mean())
-    .value("standard_deviation", s.standard_deviation());
+  w.begin_object(key).value("count", s.count).value("failures", s.failures);
+  w.value("sum", s.sum).value("sum_of_squares", s.sum_of_squares).value("min", s.min).value("max", s.max);
+  w.value("mean", s.mean()).value("standard_deviation", s.standard_deviation());
   w.begin_object("labels").value("linear", s.labels[0]).value("planar", s.labels[1]).value("scattered", s.labels[2]).end_object();
   if(!s.k_histogram.empty())
     w.array("k_histogram", s.k_histogram);
@@ -74,16 +72,9 @@ inline void write_error_statistics(Json_writer& w, const char* key, const SN::Er
 
 inline void write_settings(Json_writer& w, const Evaluation_settings& s)
 {
-  w.begin_object("settings")
-    .value("k_min", s.k_min)
-    .value("k_max", s.k_max)
-    .value("fixed_k", s.fixed_k)
-    .value("barycenter", s.barycenter)
-    .value("angle_tolerance", s.angle_tolerance)
-    .value("cut_off_angle", s.cut_off_angle)
-    .array("a_grid", s.a_grid)
-    .array("b_grid", s.b_grid)
-    .end_object();
+  w.begin_object("settings").value("k_min", s.k_min).value("k_max", s.k_max).value("fixed_k", s.fixed_k);
+  w.value("barycenter", s.barycenter).value("angle_tolerance", s.angle_tolerance);
+  w.value("cut_off_angle", s.cut_off_angle).array("a_grid", s.a_grid).array("b_grid", s.b_grid).end_object();
 }
 
 inline void write_statistics(Json_writer& w, const SN::Evaluation_statistics& s)
@@ -95,14 +86,10 @@ inline void write_statistics(Json_writer& w, const SN::Evaluation_statistics& s)
   write_error_statistics(w, "fixed_k", s.fixed_k);
   const auto km = s.k_mean_and_deviation();
   w.value("k_mean", km.first).value("k_standard_deviation", km.second);
-  w.begin_object("table3")
-    .value("a_zero", s.a_lowering[0])
-    .value("a_lower_valid", s.a_lowering[1])
-    .value("a_lower_fails", s.a_lowering[2])
-    .value("b_equals_a", s.b_lowering[0])
-    .value("b_lower_valid", s.b_lowering[1])
-    .value("b_lower_fails", s.b_lowering[2])
-    .end_object();
+  w.begin_object("table3");
+  w.value("a_zero", s.a_lowering[0]).value("a_lower_valid", s.a_lowering[1]).value("a_lower_fails", s.a_lowering[2]);
+  w.value("b_equals_a", s.b_lowering[0]).value("b_lower_valid", s.b_lowering[1]).value("b_lower_fails", s.b_lowering[2]);
+  w.end_object();
   w.array("pair_k_histogram", s.pair_k_histogram);
   w.end_object();
 }
@@ -110,16 +97,11 @@ inline void write_statistics(Json_writer& w, const SN::Evaluation_statistics& s)
 inline void write_model_json(std::ostream& out, const Model_result& m, const Evaluation_settings& settings)
 {
   Json_writer w(out);
-  w.begin_object()
-    .value("model", m.model)
-    .value("points", m.statistics.points)
-    .value("input_vertices", m.input_vertices)
-    .value("merged_duplicates", m.merged_duplicates)
-    .value("dropped_vertices", m.dropped_vertices)
-    .value("normals", m.normals)
-    .value("unoriented_normals", m.unoriented_normals)
-    .value("failures", m.statistics.optimal.failures)
-    .value("k_standard_deviation", m.k_standard_deviation);
+  w.begin_object().value("model", m.model).value("points", m.statistics.points);
+  w.value("input_vertices", m.input_vertices).value("merged_duplicates", m.merged_duplicates);
+  w.value("dropped_vertices", m.dropped_vertices).value("normals", m.normals);
+  w.value("unoriented_normals", m.unoriented_normals).value("failures", m.statistics.optimal.failures);
+  w.value("k_standard_deviation", m.k_standard_deviation);
   write_settings(w, settings);
   write_statistics(w, m.statistics);
   w.end_object().finish();

@@ -11,6 +11,7 @@
 #include "optimal_command.h"
 
 #include <CGAL/Sigmoid_neighborhoods/filter_normals.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 
 #include <CGAL/Point_set_3.h>
@@ -45,6 +46,7 @@ struct Filter_options
   bool adaptive = false;
   unsigned int size_range = SN::DEFAULT_NEIGHBORHOOD_SIZE_RANGE;
   double angle_tolerance = SN::DEFAULT_ANGLE_TOLERANCE;
+  unsigned int threads = 0; // 0: OpenMP's default
 };
 
 // Filters `normals` (one per point of `points`) in place.
@@ -53,18 +55,16 @@ SN::Normal_filter_summary filter_point_normals(const std::vector<Point>& points,
                                                const Filter_options& o)
 {
   namespace SNP = SN::parameters;
-  std::vector<std::uint32_t> indices(points.size());
-  for(std::size_t i = 0; i < indices.size(); ++i)
-    indices[i] = std::uint32_t(i);
+  std::vector<std::uint32_t> indices = point_indices(points.size()); // filter_normals() takes a mutable range
   return SN::filter_normals<SN::Parallel_if_available_tag>(
     indices,
-    SNP::normal_cut_off(o.cut_off, SNP::eigenvalue_threshold(o.eigenvalue_threshold, SNP::damping_factor(o.damping,
-      SNP::adaptive_neighborhood_size(o.adaptive, SNP::neighborhood_size_range(o.size_range,
-        SNP::angle_tolerance(o.angle_tolerance,
+    SNP::number_of_threads(o.threads, SNP::normal_cut_off(o.cut_off, SNP::eigenvalue_threshold(o.eigenvalue_threshold,
+      SNP::damping_factor(o.damping, SNP::adaptive_neighborhood_size(o.adaptive,
+        SNP::neighborhood_size_range(o.size_range, SNP::angle_tolerance(o.angle_tolerance,
           CGAL::parameters::number_of_iterations(o.iterations)
             .neighbor_radius(o.radius)
             .point_map(CGAL::make_property_map(points))
-            .normal_map(CGAL::make_property_map(normals)))))))));
+            .normal_map(CGAL::make_property_map(normals))))))))));
 }
 
 inline Filter_options read_filter_options(const Arguments& args)
@@ -85,16 +85,8 @@ inline Filter_options read_filter_options(const Arguments& args)
     throw Usage_error("--radius must be finite and > 0");
   o.adaptive = args.has("--adaptive");
   o.size_range = args.get_unsigned("--size-range", o.size_range);
-  o.angle_tolerance = args.get_double("--angle-tolerance", o.angle_tolerance);
-  if(!(o.angle_tolerance >= 0. && o.angle_tolerance < 3.14159))
-    throw Usage_error("--angle-tolerance must be in [0, pi)");
-  const int threads = static_cast<int>(args.get_unsigned("--threads", 0));
-#ifdef _OPENMP
-  if(threads > 0)
-    omp_set_num_threads(threads);
-#else
-  (void)threads;
-#endif
+  o.angle_tolerance = read_angle_tolerance(args, o.angle_tolerance);
+  o.threads = read_threads(args);
   return o;
 }
 
@@ -136,18 +128,12 @@ inline int run_filter_normals(int argc, char** argv)
                        {"-o", "--output", "--iterations", "--cut-off", "--eigenvalue-threshold", "--damping", "--radius",
                         "--size-range", "--angle-tolerance", "--threads"},
                        {"-h", "--help", "--adaptive"});
-  if(args.has("-h") || args.has("--help"))
-  {
-    std::cout << FILTER_USAGE;
+  if(print_help(args, FILTER_USAGE))
     return EXIT_OK;
-  }
-  if(args.positional().size() != 1)
-    throw Usage_error("filter-normals needs exactly one INPUT");
-  const std::string input = args.positional()[0];
-  const std::string output = args.get("-o", args.get("--output"));
-  if(output.empty())
-    throw Usage_error("filter-normals needs -o OUTPUT (.xyz, .pwn or .ply)");
-  const std::string ext = SN::internal::lower_extension(output);
+  const auto input_and_output = one_input_and_output(args, "filter-normals", "OUTPUT (.xyz, .pwn or .ply)");
+  const std::string& input = input_and_output.first;
+  const std::string& output = input_and_output.second;
+  const std::string ext = SN::lower_case_extension(output);
   if(ext != "xyz" && ext != "pwn" && ext != "ply")
     throw Usage_error("unknown output format '" + (ext.empty() ? std::string("(no extension)") : "." + ext) +
                       "': expected .xyz, .pwn or .ply");
@@ -155,15 +141,7 @@ inline int run_filter_normals(int argc, char** argv)
 
   CGAL::Real_timer timer;
   timer.start();
-  SN::Oriented_point_set model;
-  try
-  {
-    model = SN::read_oriented_point_set(input);
-  }
-  catch(const SN::Input_error& e)
-  {
-    throw Usage_error(input + ": " + e.what());
-  }
+  const SN::Oriented_point_set model = read_input(input, [&] { return SN::read_oriented_point_set(input); });
   std::vector<SN::Oriented_point_set::Vector_3> normals = model.normals;
   SN::Normal_filter_summary summary;
   try

@@ -13,6 +13,7 @@
 #include <exception>
 #include <iostream>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -27,6 +28,13 @@ const char* USAGE =
   "  denoise-experiment  the paper's Table 4: normal MSE of noisy, filtered and adaptively filtered normals\n"
   "run 'sigmoid-neighborhoods COMMAND --help' for the options of a command\n";
 
+// The one line of a command that fails, and its exit code.
+int fail(const std::string& command, const std::string& message, int exit_code)
+{
+  std::cerr << "sigmoid-neighborhoods " << command << ": " << message << '\n';
+  return exit_code;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -40,18 +48,13 @@ int main(int argc, char** argv)
   const std::string command = argv[1];
   try
   {
-    if(command == "optimal")
-      return run_optimal(argc, argv);
-    if(command == "evaluate")
-      return run_evaluate(argc, argv);
-    if(command == "merge")
-      return run_merge(argc, argv);
-    if(command == "report")
-      return run_report(argc, argv);
-    if(command == "filter-normals")
-      return run_filter_normals(argc, argv);
-    if(command == "denoise-experiment")
-      return run_denoise_experiment(argc, argv);
+    typedef int (*Run)(int, char**);
+    const std::pair<const char*, Run> commands[] = {
+      {"optimal", run_optimal}, {"evaluate", run_evaluate}, {"merge", run_merge}, {"report", run_report},
+      {"filter-normals", run_filter_normals}, {"denoise-experiment", run_denoise_experiment}};
+    for(const auto& c : commands)
+      if(command == c.first)
+        return c.second(argc, argv);
     if(command == "-h" || command == "--help" || command == "help")
     {
       std::cout << USAGE;
@@ -60,24 +63,8 @@ int main(int argc, char** argv)
     std::cerr << "sigmoid-neighborhoods: unknown command '" << command << "'\n" << USAGE;
     return EXIT_BAD_INPUT;
   }
-  catch(const Usage_error& e)
-  {
-    std::cerr << "sigmoid-neighborhoods " << command << ": " << e.what() << '\n';
-    return EXIT_BAD_INPUT;
-  }
-  catch(const std::invalid_argument& e)
-  {
-    std::cerr << "sigmoid-neighborhoods " << command << ": " << e.what() << '\n';
-    return EXIT_BAD_INPUT;
-  }
-  catch(const std::bad_alloc&)
-  {
-    std::cerr << "sigmoid-neighborhoods " << command << ": out of memory\n";
-    return EXIT_FAILED;
-  }
-  catch(const std::exception& e)
-  {
-    std::cerr << "sigmoid-neighborhoods " << command << ": internal error: " << e.what() << '\n';
-    return EXIT_FAILED;
-  }
+  catch(const Usage_error& e) { return fail(command, e.what(), EXIT_BAD_INPUT); }
+  catch(const std::invalid_argument& e) { return fail(command, e.what(), EXIT_BAD_INPUT); }
+  catch(const std::bad_alloc&) { return fail(command, "out of memory", EXIT_FAILED); }
+  catch(const std::exception& e) { return fail(command, std::string("internal error: ") + e.what(), EXIT_FAILED); }
 }

@@ -19,12 +19,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <vector>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace sigmoid_tool {
 
@@ -40,7 +37,7 @@ struct Search_options
   unsigned int k_min = SN::DEFAULT_K_MIN, k_max = SN::DEFAULT_K_MAX;
   SN::Barycenter barycenter = SN::Barycenter::WEIGHTED;
   double angle_tolerance = SN::DEFAULT_ANGLE_TOLERANCE;
-  int threads = 0; // 0: OpenMP's default
+  unsigned int threads = 0; // 0: OpenMP's default
 };
 
 inline Search_options read_search_options(const Arguments& args)
@@ -55,14 +52,8 @@ inline Search_options read_search_options(const Arguments& args)
     o.barycenter = SN::Barycenter::UNWEIGHTED;
   else if(bary != "weighted")
     throw Usage_error("--barycenter must be weighted or unweighted, got '" + bary + "'");
-  o.angle_tolerance = args.get_double("--angle-tolerance", o.angle_tolerance);
-  if(!(o.angle_tolerance >= 0. && o.angle_tolerance < 3.14159))
-    throw Usage_error("--angle-tolerance must be in [0, pi)");
-  o.threads = static_cast<int>(args.get_unsigned("--threads", 0));
-#ifdef _OPENMP
-  if(o.threads > 0)
-    omp_set_num_threads(o.threads);
-#endif
+  o.angle_tolerance = read_angle_tolerance(args, o.angle_tolerance);
+  o.threads = read_threads(args);
   return o;
 }
 
@@ -70,7 +61,7 @@ inline Search_options read_search_options(const Arguments& args)
 // Without `estimate_normals`, a point set without normals comes back with no normals.
 inline SN::Oriented_point_set read_model(const std::string& path, unsigned int k_max, bool estimate_normals = true)
 {
-  SN::Oriented_point_set model = SN::read_oriented_point_set(path, estimate_normals ? 18 : 0);
+  SN::Oriented_point_set model = SN::read_oriented_point_set(path, estimate_normals ? SN::DEFAULT_ESTIMATION_NEIGHBORS : 0);
   if(model.points.size() < std::size_t(k_max) + 1)
     throw SN::Input_error("needs at least k_max + 1 = " + std::to_string(k_max + 1) + " distinct points, got " +
                           std::to_string(model.points.size()) +
@@ -94,29 +85,30 @@ inline std::string model_description(const SN::Oriented_point_set& model)
   return s;
 }
 
+// CGAL's point and normal maps over the points of `model`, indexed by point_indices().
+inline auto model_maps(const SN::Oriented_point_set& model)
+{
+  return CGAL::parameters::point_map(CGAL::make_property_map(model.points))
+    .normal_map(CGAL::make_property_map(model.normals));
+}
+
+// The named parameters of `o` on top of the pack `np` (ours first, CGAL's after).
+template <typename NamedParameters>
+auto with_search_options(const Search_options& o, const NamedParameters& np)
+{
+  namespace SNP = SN::parameters;
+  return SNP::number_of_threads(o.threads, SNP::k_min(o.k_min, SNP::k_max(o.k_max, SNP::barycenter(o.barycenter,
+    SNP::angle_tolerance(o.angle_tolerance, np)))));
+}
+
 inline std::vector<SN::Optimal_sigmoid_neighborhood> optimal_search(const SN::Oriented_point_set& model,
                                                                     const Search_options& o)
 {
-  namespace SNP = SN::parameters;
-  std::vector<std::uint32_t> indices(model.points.size());
-  for(std::size_t i = 0; i < indices.size(); ++i)
-    indices[i] = std::uint32_t(i);
   std::vector<SN::Optimal_sigmoid_neighborhood> records;
   records.reserve(model.points.size());
   SN::compute_optimal_sigmoid_neighborhoods<SN::Parallel_if_available_tag>(
-    indices, std::back_inserter(records),
-    SNP::k_min(o.k_min, SNP::k_max(o.k_max, SNP::barycenter(o.barycenter, SNP::angle_tolerance(o.angle_tolerance))))
-      .point_map(CGAL::make_property_map(model.points))
-      .normal_map(CGAL::make_property_map(model.normals)));
+    point_indices(model.points.size()), std::back_inserter(records), with_search_options(o, model_maps(model)));
   return records;
-}
-
-// 17 significant digits: every double reads back to the same bits.
-inline void print_number(std::ostream& out, double v)
-{
-  char buffer[40];
-  std::snprintf(buffer, sizeof(buffer), "%.17g", v);
-  out << buffer;
 }
 
 const char* const OPTIMAL_CSV_HEADER =
@@ -210,31 +202,17 @@ inline int run_optimal(int argc, char** argv)
   const Arguments args(argc, argv, 2,
                        {"-o", "--output", "--ply", "--k-min", "--k-max", "--barycenter", "--angle-tolerance", "--threads"},
                        {"-h", "--help"});
-  if(args.has("-h") || args.has("--help"))
-  {
-    std::cout << OPTIMAL_USAGE;
+  if(print_help(args, OPTIMAL_USAGE))
     return EXIT_OK;
-  }
-  if(args.positional().size() != 1)
-    throw Usage_error("optimal needs exactly one INPUT");
-  const std::string input = args.positional()[0];
-  const std::string csv = args.get("-o", args.get("--output"));
-  if(csv.empty())
-    throw Usage_error("optimal needs -o OUT.csv");
+  const auto input_and_output = one_input_and_output(args, "optimal", "OUT.csv");
+  const std::string& input = input_and_output.first;
+  const std::string& csv = input_and_output.second;
   const std::string ply = args.get("--ply");
   const Search_options options = read_search_options(args);
 
   CGAL::Real_timer timer;
   timer.start();
-  SN::Oriented_point_set model;
-  try
-  {
-    model = read_model(input, options.k_max);
-  }
-  catch(const SN::Input_error& e)
-  {
-    throw Usage_error(input + ": " + e.what());
-  }
+  const SN::Oriented_point_set model = read_input(input, [&] { return read_model(input, options.k_max); });
   const auto records = optimal_search(model, options);
   std::size_t failures = 0;
   for(const auto& r : records)

@@ -20,10 +20,6 @@
 #include <string>
 #include <vector>
 
-#ifndef SIGMOID_NEIGHBORHOODS_SCRIPT_DIR
-#define SIGMOID_NEIGHBORHOODS_SCRIPT_DIR ""
-#endif
-
 namespace sigmoid_tool {
 
 inline const char* REPORT_USAGE =
@@ -43,37 +39,6 @@ inline std::string format(const char* pattern, double v)
 inline std::string percent(std::size_t part, std::size_t whole)
 {
   return whole == 0 ? "–" : format("%.2f %%", 100. * double(part) / double(whole));
-}
-
-// The plotting script: next to the executable once installed, else in the source tree.
-inline std::string find_plot_script()
-{
-  std::vector<fs::path> candidates;
-  if(const char* env = std::getenv("SIGMOID_NEIGHBORHOODS_SCRIPTS"))
-    candidates.push_back(fs::path(env) / "plot_evaluation.py");
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if(!ec)
-    candidates.push_back(exe.parent_path().parent_path() / "share" / "sigmoid-neighborhoods" / "plot_evaluation.py");
-  candidates.push_back(fs::path(SIGMOID_NEIGHBORHOODS_SCRIPT_DIR) / "plot_evaluation.py");
-  for(const auto& c : candidates)
-    if(fs::exists(c, ec))
-      return c.string();
-  throw Usage_error("cannot find plot_evaluation.py (set SIGMOID_NEIGHBORHOODS_SCRIPTS)");
-}
-
-inline std::string python_interpreter()
-{
-  // Debian's interpreter has matplotlib; a python3 earlier on PATH may not.
-  return fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-}
-
-inline std::string shell_quote(const std::string& s)
-{
-  std::string q = "'";
-  for(char c : s)
-    q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
 }
 
 struct Repository_summary
@@ -214,11 +179,8 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
 inline int run_report(int argc, char** argv)
 {
   const Arguments args(argc, argv, 2, {"-o", "--output", "--figure-model", "--threads"}, {"-h", "--help"});
-  if(args.has("-h") || args.has("--help"))
-  {
-    std::cout << REPORT_USAGE;
+  if(print_help(args, REPORT_USAGE))
     return EXIT_OK;
-  }
   if(args.positional().empty())
     throw Usage_error("report needs at least one evaluation folder");
   const std::string outdir = args.get("-o", args.get("--output", args.positional().front()));
@@ -234,10 +196,7 @@ inline int run_report(int argc, char** argv)
     r.name = r.tree.get<std::string>("repository");
     repos.push_back(r);
   }
-  std::error_code ec;
-  fs::create_directories(outdir, ec);
-  if(ec)
-    throw Usage_error("cannot create " + outdir + ": " + ec.message());
+  create_output_folder(outdir);
 
   // Figure 3's per-point values: computed for --figure-model, else a --per-point CSV of the evaluation.
   std::string figure3_csv, figure3_name, figure3_note;
@@ -249,21 +208,13 @@ inline int run_report(int argc, char** argv)
     Evaluation_settings settings;
     if(repos.front().evaluated())
       settings = read_settings(settings_tree);
-    settings.cut_off_angle = std::acos(0.9);
+    settings.cut_off_angle = std::acos(EVALUATION_CUT_OFF_COSINE);
     settings.a_grid = settings.b_grid = SN::default_angle_grid();
     options.k_min = settings.k_min;
     options.k_max = settings.k_max;
     options.barycenter = settings.barycenter == "unweighted" ? SN::Barycenter::UNWEIGHTED : SN::Barycenter::WEIGHTED;
     options.angle_tolerance = settings.angle_tolerance;
-    SN::Oriented_point_set model;
-    try
-    {
-      model = read_model(model_path, options.k_max);
-    }
-    catch(const SN::Input_error& e)
-    {
-      throw Usage_error(model_path + ": " + e.what());
-    }
+    const SN::Oriented_point_set model = read_input(model_path, [&] { return read_model(model_path, options.k_max); });
     const auto evaluations = evaluate_model(model, options, settings);
     figure3_csv = (fs::path(outdir) / "figure3_points.csv").string();
     write_file_atomically(figure3_csv, [&](std::ofstream& out) { write_evaluation_csv(out, model, evaluations); });
@@ -297,13 +248,12 @@ inline int run_report(int argc, char** argv)
     write_report_markdown(out, repos, figure3_note, !figure3_csv.empty());
   });
 
-  std::string command = shell_quote(python_interpreter()) + " " + shell_quote(find_plot_script()) +
-                        " --output " + shell_quote(outdir);
+  std::vector<std::string> plot_arguments = {"--output", outdir};
   if(!figure3_csv.empty())
-    command += " --figure3 " + shell_quote(figure3_csv) + " --figure3-name " + shell_quote(figure3_name);
+    plot_arguments.insert(plot_arguments.end(), {"--figure3", figure3_csv, "--figure3-name", figure3_name});
   for(const auto& r : repos)
-    command += " " + shell_quote(r.folder);
-  if(std::system(command.c_str()) != 0)
+    plot_arguments.push_back(r.folder);
+  if(!run_python_script("plot_evaluation.py", plot_arguments))
   {
     std::cerr << "sigmoid-neighborhoods report: the figures could not be drawn (needs python3 with matplotlib); "
               << report << " is written\n";

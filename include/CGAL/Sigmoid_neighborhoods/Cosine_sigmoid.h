@@ -6,6 +6,8 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_COSINE_SIGMOID_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_COSINE_SIGMOID_H
 
+#include <CGAL/number_type_config.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -23,7 +25,6 @@ constexpr double DEFAULT_ANGLE_TOLERANCE = 1e-6;
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
-constexpr double PI = 3.141592653589793238462643383279502884;
 // Margin in cosine space outside which the dot-product path decides without acos:
 // far above the few-ulp errors of cos and acos, far below any useful angle step.
 constexpr double COSINE_DECISION_MARGIN = 1e-9;
@@ -64,10 +65,10 @@ public:
   Cosine_sigmoid(double a, double b, double angle_tolerance = DEFAULT_ANGLE_TOLERANCE)
     : m_a(a), m_b(b), m_tolerance(angle_tolerance)
   {
-    if(!(a >= 0. && a <= b && b <= internal::PI))
+    if(!(a >= 0. && a <= b && b <= CGAL_PI))
       throw std::invalid_argument("sigmoid parameters must satisfy 0 <= a <= b <= pi, got a = " +
                                   std::to_string(a) + ", b = " + std::to_string(b));
-    if(!(angle_tolerance >= 0. && angle_tolerance < internal::PI))
+    if(!(angle_tolerance >= 0. && angle_tolerance < CGAL_PI))
       throw std::invalid_argument("angle tolerance must be in [0, pi), got " +
                                   std::to_string(angle_tolerance));
     // Above cos(max(a, tol)) every weight is 1, below cos(max(b, tol)) every weight is 0.
@@ -83,7 +84,7 @@ public:
   double angle_tolerance() const { return m_tolerance; }
 
   /// returns `true` when all weights are 1 (`a = b = pi`).
-  bool is_equal_weights() const { return m_a == internal::PI && m_b == internal::PI; }
+  bool is_equal_weights() const { return m_a == CGAL_PI && m_b == CGAL_PI; }
 
   /// the weight of the angle `x` in `[0, pi]` (the reference formulation).
   double operator()(double x) const { return weight_of_argument(transition_argument(x)); }
@@ -104,7 +105,7 @@ public:
       return x <= m_a ? WEIGHT_ONE : WEIGHT_ZERO;
     if(x > m_b)
       return WEIGHT_ZERO;
-    return internal::PI * (x - m_a) / (m_b - m_a);
+    return CGAL_PI * (x - m_a) / (m_b - m_a);
   }
 
   static double weight_of_argument(double t)

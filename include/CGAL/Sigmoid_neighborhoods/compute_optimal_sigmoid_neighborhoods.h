@@ -59,12 +59,6 @@ namespace Sigmoid_neighborhoods {
         `CGAL::Point_set_3`, whose normal map is the default}
       \cgalParamExtra{normals need not be unit length; a zero or non-finite normal is an error}
     \cgalParamNEnd
-    \cgalParamNBegin{geom_traits}
-      \cgalParamDescription{an instance of a geometric traits class}
-      \cgalParamType{a model of `Kernel`}
-      \cgalParamDefault{the kernel deduced from the point type of `point_map`}
-      \cgalParamExtra{the computation itself runs in `double`}
-    \cgalParamNEnd
     \cgalParamNBegin{k_min}
       \cgalParamDescription{the smallest neighborhood size of the search, `K = {k_min, ..., k_max}`}
       \cgalParamType{`unsigned int`}
@@ -117,8 +111,9 @@ OutputIterator compute_optimal_sigmoid_neighborhoods(const PointRange& points, O
   static_assert(NP_helper::has_normal_map(), "compute_optimal_sigmoid_neighborhoods() needs a normal map");
   const auto input = internal::copy_oriented_points(points, NP_helper::get_const_point_map(points, np),
                                                     NP_helper::get_normal_map(points, np));
+  const internal::Neighbor_query query = internal::neighbor_query(input.points, np);
   internal::optimal_search_all<ConcurrencyTag>(
-    input, internal::search_settings(np),
+    input, query, internal::search_settings(np),
     [&output](std::size_t, const Optimal_sigmoid_neighborhood& r) { *output++ = r; });
   return output;
 }
@@ -199,8 +194,9 @@ Mesh_points_summary compute_optimal_sigmoid_neighborhoods(const CGAL::Surface_me
 {
   const auto mesh_points = internal::mesh_points(mesh, np);
   std::vector<Optimal_sigmoid_neighborhood> records(mesh_points.input.size());
+  const internal::Neighbor_query query(mesh_points.input.points);
   internal::optimal_search_all<ConcurrencyTag>(
-    mesh_points.input, internal::search_settings(np),
+    mesh_points.input, query, internal::search_settings(np),
     [&records](std::size_t i, const Optimal_sigmoid_neighborhood& r) { records[i] = r; });
   for(auto v : mesh.vertices())
   {

@@ -10,6 +10,7 @@
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
 #include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Local_neighborhood.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/mesh_points.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
@@ -27,29 +28,23 @@ namespace Sigmoid_neighborhoods {
 namespace internal {
 
 template <typename ConcurrencyTag>
-std::vector<Dimensionality_features> features_all(const Oriented_points& input, const Cosine_sigmoid& sigmoid,
-                                                  unsigned int k, Barycenter barycenter)
+std::vector<Dimensionality_features> features_all(const Oriented_points& input, const Neighbor_query& query,
+                                                  const Cosine_sigmoid& sigmoid, unsigned int k,
+                                                  Barycenter barycenter, unsigned int threads)
 {
   if(k < 1)
     throw std::invalid_argument("the neighborhood size k must be at least 1");
   check_enough_points(input.size(), k);
-  const K_neighbor_query query(input.points);
+  check_neighborhood_size(query, k);
   std::vector<Dimensionality_features> result(input.size());
-  struct Scratch
-  {
-    std::vector<Neighbor> neighbors;
-    Local_neighborhood local;
-    std::vector<double> weights;
-  };
-  for_each_index<ConcurrencyTag>(
-    input.size(), [] { return Scratch(); },
-    [&](std::size_t i, Scratch& s) {
-      query.query(static_cast<std::uint32_t>(i), k, s.neighbors);
-      s.local.assign(input, static_cast<std::uint32_t>(i), s.neighbors);
-      s.weights.resize(s.local.size());
-      s.local.weights(sigmoid, s.weights.data());
-      result[i] = s.local.features(s.weights.data(), k, barycenter);
-    });
+  for_each_neighborhood<ConcurrencyTag, Dimensionality_features>(
+    input, query, k, threads, [] { return std::vector<double>(); },
+    [&](std::size_t, const Local_neighborhood& local, std::vector<double>& weights) {
+      weights.resize(local.size());
+      local.weights(sigmoid, weights.data());
+      return local.features(weights.data(), k, barycenter);
+    },
+    [&result](std::size_t i, const Dimensionality_features& f) { result[i] = f; });
   return result;
 }
 
@@ -96,12 +91,6 @@ std::vector<Dimensionality_features> features_all(const Oriented_points& input, 
         `CGAL::Point_set_3`, whose normal map is the default}
       \cgalParamExtra{normals need not be unit length; a zero or non-finite normal is an error}
     \cgalParamNEnd
-    \cgalParamNBegin{geom_traits}
-      \cgalParamDescription{an instance of a geometric traits class}
-      \cgalParamType{a model of `Kernel`}
-      \cgalParamDefault{the kernel deduced from the point type of `point_map`}
-      \cgalParamExtra{the computation itself runs in `double`}
-    \cgalParamNEnd
     \cgalParamNBegin{barycenter}
       \cgalParamDescription{the centre of the covariance matrix}
       \cgalParamType{`Barycenter`}
@@ -127,7 +116,9 @@ OutputIterator compute_sigmoid_features(const PointRange& points, const Cosine_s
   const auto input = internal::copy_oriented_points(points, NP_helper::get_const_point_map(points, np),
                                                     NP_helper::get_normal_map(points, np));
   const Barycenter barycenter = choose_parameter(get_parameter(np, internal_np::barycenter), Barycenter::WEIGHTED);
-  for(const Dimensionality_features& f : internal::features_all<ConcurrencyTag>(input, sigmoid, k, barycenter))
+  const internal::Neighbor_query query = internal::neighbor_query(input.points, np);
+  for(const Dimensionality_features& f : internal::features_all<ConcurrencyTag>(input, query, sigmoid, k, barycenter,
+                                                                                internal::number_of_threads(np)))
     *output++ = f;
   return output;
 }
@@ -183,7 +174,9 @@ Mesh_points_summary compute_sigmoid_features(const CGAL::Surface_mesh<Point>& me
   using CGAL::parameters::get_parameter;
   const auto mesh_points = internal::mesh_points(mesh, np);
   const Barycenter barycenter = choose_parameter(get_parameter(np, internal_np::barycenter), Barycenter::WEIGHTED);
-  const auto features = internal::features_all<ConcurrencyTag>(mesh_points.input, sigmoid, k, barycenter);
+  const internal::Neighbor_query query(mesh_points.input.points);
+  const auto features = internal::features_all<ConcurrencyTag>(mesh_points.input, query, sigmoid, k, barycenter,
+                                                               internal::number_of_threads(np));
   for(auto v : mesh.vertices())
   {
     const std::uint32_t i = mesh_points.point_of_vertex[std::size_t(v)];

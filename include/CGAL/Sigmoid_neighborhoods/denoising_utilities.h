@@ -6,8 +6,9 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_DENOISING_UTILITIES_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_DENOISING_UTILITIES_H
 
-#include <CGAL/Sigmoid_neighborhoods/internal/Ball_neighborhoods.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/K_neighbor_query.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Oriented_points.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -52,14 +53,9 @@ double compute_mean_neighbor_distance(const PointRange& points, unsigned int k,
   const auto point_map = NP_helper::get_const_point_map(points, np);
   std::vector<internal::Double_point> copy;
   for(const auto& item : points)
-  {
-    const auto& p = get(point_map, item);
-    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
-    if(!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
-      throw std::invalid_argument("point " + std::to_string(copy.size()) + " has a non-finite coordinate");
-    copy.emplace_back(x, y, z);
-  }
-  return internal::mean_neighbor_distance<ConcurrencyTag>(copy, k);
+    copy.push_back(internal::checked_point(get(point_map, item), "point", copy.size()));
+  return internal::mean_neighbor_distance<ConcurrencyTag>(internal::Neighbor_query(copy), k,
+                                                          internal::number_of_threads(np));
 }
 
 /*!

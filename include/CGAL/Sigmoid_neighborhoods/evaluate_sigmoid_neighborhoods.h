@@ -8,6 +8,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/Optimal_sigmoid_neighborhood.h>
+#include <CGAL/Sigmoid_neighborhoods/Point_evaluation.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Optimal_search.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -21,62 +22,8 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
-/*!
-  \ingroup PkgSigmoidNeighborhoodsEvaluation
-  the outcome of lowering `a*` (or `b*`) to the next smaller grid value at the same `k*`:
-  the columns `a-` / `not a-` (`b-` / `not b-`) of the paper's Table 3.
-*/
-enum class Lowering
-{
-  AT_BOTTOM,  ///< `a* = 0` (column `a = 0`), or `b* = a*` (column `b = a`)
-  STILL_VALID,///< the lowered triple does not fail (`a-`, `b-`)
-  FAILS       ///< the lowered triple is degenerate (`not a-`, `not b-`)
-};
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsEvaluation
-  everything the evaluation of the paper's Section 5 needs at one point: the optimal triple with
-  the equal-weights baseline, the sharp cut-off `a = b = cut_off_angle` at its best `k`, equal
-  weights at a fixed `k`, and the Table 3 lowering tests. Written by
-  `evaluate_sigmoid_neighborhoods()`, summed up by `Evaluation_statistics::add()`.
-*/
-struct Point_evaluation
-{
-  Optimal_sigmoid_neighborhood optimal;                   ///< `(a*, b*, k*)` and equal weights at their best `k`
-  Dimensionality equal_label = Dimensionality::DEGENERATE; ///< the label with equal weights at `k_equal`
-  double error_cut_off = std::numeric_limits<double>::infinity(); ///< least `E_dim` of the cut-off over `K`
-  unsigned int k_cut_off = 0;                              ///< its `k`, 0 when it fails at every `k`
-  /// the label of the cut-off at `k_cut_off`, `DEGENERATE` when it fails at every `k`
-  Dimensionality cut_off_label = Dimensionality::DEGENERATE;
-  double error_fixed_k = std::numeric_limits<double>::infinity(); ///< `E_dim` with equal weights at `fixed_k`
-  /// the label with equal weights at `fixed_k`
-  Dimensionality fixed_k_label = Dimensionality::DEGENERATE;
-  Lowering a_lowering = Lowering::AT_BOTTOM; ///< meaningless for a failure
-  Lowering b_lowering = Lowering::AT_BOTTOM; ///< meaningless for a failure
-};
-
 /// \cond SKIP_IN_MANUAL
 namespace internal {
-
-// Best k of one fixed sigmoid over K with the tie rule of SPEC §5.
-inline void best_k(const Local_neighborhood& local, const Cosine_sigmoid& sigmoid, const Search_settings& s,
-                   std::vector<double>& w, double& error, unsigned int& k_best, Dimensionality& label)
-{
-  w.resize(local.size());
-  local.weights(sigmoid, w.data());
-  error = std::numeric_limits<double>::infinity();
-  k_best = 0;
-  for(unsigned int k = s.k_min; k <= s.k_max; ++k)
-  {
-    const double e = local.features(w.data(), k, s.barycenter).error;
-    if(e < error - TIE_TOLERANCE)
-    {
-      error = e;
-      k_best = k;
-    }
-  }
-  label = k_best == 0 ? Dimensionality::DEGENERATE : local.features(w.data(), k_best, s.barycenter).label;
-}
 
 inline bool is_degenerate_triple(const Local_neighborhood& local, double a, double b, unsigned int k,
                                  const Search_settings& s, std::vector<double>& w)
@@ -88,27 +35,34 @@ inline bool is_degenerate_triple(const Local_neighborhood& local, double a, doub
 
 // `sink(i, evaluation)` receives the evaluations in index order.
 template <typename ConcurrencyTag, typename Sink>
-void evaluate_all(const Oriented_points& input, const Search_settings& settings, double cut_off_angle,
-                  unsigned int fixed_k, const Sink& sink)
+void evaluate_all(const Oriented_points& input, const Neighbor_query& query, const Search_settings& settings,
+                  double cut_off_angle, unsigned int fixed_k, const Sink& sink)
 {
   check_enough_points(input.size(), settings.k_max);
+  check_neighborhood_size(query, settings.k_max);
   if(!(fixed_k >= settings.k_min && fixed_k <= settings.k_max))
     throw std::invalid_argument("fixed_k must lie in [k_min, k_max]");
   const Cosine_sigmoid cut_off(cut_off_angle, cut_off_angle, settings.angle_tolerance);
-  const Cosine_sigmoid equal(PI, PI, settings.angle_tolerance);
-  const Optimal_search search(input, settings);
+  const Optimal_search search(settings);
   struct Scratch
   {
     Optimal_search::Scratch search;
     std::vector<double> w;
   };
-  for_each_index_in_blocks<ConcurrencyTag, Point_evaluation>(
-    input.size(), [&search] { return Scratch{search.make_scratch(), {}}; },
-    [&](std::size_t i, Scratch& s) {
+  for_each_neighborhood<ConcurrencyTag, Point_evaluation>(
+    input, query, settings.k_max, settings.threads, [&search] { return Scratch{search.make_scratch(), {}}; },
+    [&](std::size_t, const Local_neighborhood& local, Scratch& s) {
       Point_evaluation e;
-      e.optimal = search(static_cast<std::uint32_t>(i), s.search);
-      const Local_neighborhood& local = s.search.local; // N_i(k_max) of point i, from the search
-      best_k(local, cut_off, settings, s.w, e.error_cut_off, e.k_cut_off, e.cut_off_label);
+      e.optimal = search(local, s.search);
+      // the cut-off at its best k
+      s.w.resize(local.size());
+      local.weights(cut_off, s.w.data());
+      const Local_neighborhood::Best_size best = local.best_size(s.w.data(), settings.k_min, settings.k_max,
+                                                                 settings.barycenter);
+      e.error_cut_off = best.error;
+      e.k_cut_off = best.k;
+      e.cut_off_label =
+        best.k == 0 ? Dimensionality::DEGENERATE : local.features(s.w.data(), best.k, settings.barycenter).label;
       s.w.assign(local.size(), 1.);
       if(e.optimal.k_equal != 0)
         e.equal_label = local.features(s.w.data(), e.optimal.k_equal, settings.barycenter).label;
@@ -173,12 +127,6 @@ void evaluate_all(const Oriented_points& input, const Search_settings& settings,
       \cgalParamDefault{none: required (a static assertion fails without it), except for a
         `CGAL::Point_set_3`, whose normal map is the default}
       \cgalParamExtra{normals need not be unit length; a zero or non-finite normal is an error}
-    \cgalParamNEnd
-    \cgalParamNBegin{geom_traits}
-      \cgalParamDescription{an instance of a geometric traits class}
-      \cgalParamType{a model of `Kernel`}
-      \cgalParamDefault{the kernel deduced from the point type of `point_map`}
-      \cgalParamExtra{the computation itself runs in `double`}
     \cgalParamNEnd
     \cgalParamNBegin{k_min}
       \cgalParamDescription{the smallest neighborhood size of the search, `K = {k_min, ..., k_max}`}
@@ -248,7 +196,8 @@ OutputIterator evaluate_sigmoid_neighborhoods(const PointRange& points, OutputIt
   const internal::Search_settings settings = internal::search_settings(np);
   const double cut_off = choose_parameter(get_parameter(np, internal_np::cut_off_angle), std::acos(0.9));
   const unsigned int fixed_k = choose_parameter(get_parameter(np, internal_np::fixed_k), settings.k_max);
-  internal::evaluate_all<ConcurrencyTag>(input, settings, cut_off, fixed_k,
+  const internal::Neighbor_query query = internal::neighbor_query(input.points, np);
+  internal::evaluate_all<ConcurrencyTag>(input, query, settings, cut_off, fixed_k,
                                          [&output](std::size_t, const Point_evaluation& e) { *output++ = e; });
   return output;
 }

@@ -6,7 +6,8 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_EVALUATION_STATISTICS_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_EVALUATION_STATISTICS_H
 
-#include <CGAL/Sigmoid_neighborhoods/evaluate_sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/Point_evaluation.h>
+#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
 
 #include <algorithm>
 #include <array>

@@ -8,10 +8,11 @@
 
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/Ball_neighborhoods.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/K_neighbor_query.h>
+#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Local_neighborhood.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/Optimal_search.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/mesh_points.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
@@ -90,6 +91,7 @@ struct Normal_filter_settings
   unsigned int size_range = DEFAULT_NEIGHBORHOOD_SIZE_RANGE;
   double angle_tolerance = DEFAULT_ANGLE_TOLERANCE;
   Barycenter barycenter = Barycenter::WEIGHTED;
+  unsigned int threads = 0; // of a call with Parallel_tag; 0: the default
 };
 
 template <typename NamedParameters>
@@ -109,6 +111,7 @@ Normal_filter_settings normal_filter_settings(const NamedParameters& np)
     choose_parameter(get_parameter(np, internal_np::neighborhood_size_range), DEFAULT_NEIGHBORHOOD_SIZE_RANGE);
   s.angle_tolerance = choose_parameter(get_parameter(np, internal_np::angle_tolerance), DEFAULT_ANGLE_TOLERANCE);
   s.barycenter = choose_parameter(get_parameter(np, internal_np::barycenter), Barycenter::WEIGHTED);
+  s.threads = number_of_threads(np);
   if(!(s.cut_off >= -1. && s.cut_off <= 1.))
     throw std::invalid_argument("the normal cut-off must lie in [-1, 1], got " + std::to_string(s.cut_off));
   if(!std::isfinite(s.eigenvalue_threshold))
@@ -117,45 +120,9 @@ Normal_filter_settings normal_filter_settings(const NamedParameters& np)
     throw std::invalid_argument("the damping factor must be finite and >= 0, got " + std::to_string(s.damping));
   if(!(s.radius >= 0. && std::isfinite(s.radius)))
     throw std::invalid_argument("the neighbor radius must be finite and > 0, got " + std::to_string(s.radius));
-  if(!(s.angle_tolerance >= 0. && s.angle_tolerance < PI))
+  if(!(s.angle_tolerance >= 0. && s.angle_tolerance < CGAL_PI))
     throw std::invalid_argument("angle tolerance must be in [0, pi), got " + std::to_string(s.angle_tolerance));
   return s;
-}
-
-template <typename Index>
-bool index_in_range(Index j, std::size_t n)
-{
-  if constexpr(std::is_signed<Index>::value)
-    if(j < 0)
-      return false;
-  return std::size_t(j) < n;
-}
-
-// The caller's neighborhoods (a range of ranges of indices), checked.
-template <typename Lists>
-Neighbor_lists neighbor_lists(const Lists& lists, std::size_t n)
-{
-  Neighbor_lists result;
-  std::size_t i = 0;
-  for(const auto& list : lists)
-  {
-    if(i == n)
-      break;
-    for(const auto& j : list)
-    {
-      if(!index_in_range(j, n))
-        throw std::invalid_argument("neighborhood of point " + std::to_string(i) + ": index " + std::to_string(j) +
-                                    " is out of range (" + std::to_string(n) + " points)");
-      if(std::size_t(j) == i)
-        throw std::invalid_argument("neighborhood of point " + std::to_string(i) + " contains the point itself");
-      result.indices.push_back(static_cast<std::uint32_t>(j));
-    }
-    result.offsets.push_back(result.indices.size());
-    ++i;
-  }
-  if(result.size() != n || std::size_t(std::distance(std::begin(lists), std::end(lists))) != n)
-    throw std::invalid_argument("the neighborhoods must hold one list per point (" + std::to_string(n) + ")");
-  return result;
 }
 
 // One damped update n_i <- normalize(T~ n_i + d n_i) from the normal voting tensor of the neighbors
@@ -213,6 +180,9 @@ Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_
   summary.points = n;
   summary.iterations = s.iterations;
 
+  // The one kd-tree of the filter: the scale, the balls and the adaptive k-NN.
+  const Neighbor_query query(input.points);
+
   // The default neighborhoods Omega_i, built once (yadav-normal-filtering.md §2).
   Neighbor_lists ball;
   if(given == nullptr)
@@ -224,10 +194,10 @@ Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_
         throw std::invalid_argument("filter_normals(): the default radius needs at least " +
                                     std::to_string(FILTER_SCALE_NEIGHBORS + 1) + " points, got " + std::to_string(n) +
                                     " (or give neighbor_radius or neighborhoods)");
-      radius = FILTER_RADIUS_FACTOR * mean_neighbor_distance<ConcurrencyTag>(input.points, FILTER_SCALE_NEIGHBORS);
+      radius = FILTER_RADIUS_FACTOR * mean_neighbor_distance<ConcurrencyTag>(query, FILTER_SCALE_NEIGHBORS, s.threads);
     }
     summary.radius = radius;
-    ball = ball_neighborhoods<ConcurrencyTag>(input.points, radius);
+    ball = ball_neighborhoods<ConcurrencyTag>(query, radius, s.threads);
   }
   const Neighbor_lists& omega = given != nullptr ? *given : ball;
   summary.mean_neighbors = double(omega.indices.size()) / double(n);
@@ -253,9 +223,8 @@ Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_
   std::vector<std::uint32_t> empty_cones(n, 0), fallbacks(n, 0);
   if(s.adaptive && knn_offsets[n] > 0)
   {
-    const K_neighbor_query query(input.points);
     for_each_index<ConcurrencyTag>(
-      n, [] { return std::vector<Neighbor>(); },
+      n, s.threads, [] { return std::vector<Neighbor>(); },
       [&](std::size_t i, std::vector<Neighbor>& found) {
         query.query(static_cast<std::uint32_t>(i), k_high[i], found);
         std::copy(found.begin(), found.end(), knn.begin() + std::ptrdiff_t(knn_offsets[i]));
@@ -275,7 +244,7 @@ Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_
   {
     const std::vector<Eigen::Vector3d>& normals = input.normals;
     for_each_index<ConcurrencyTag>(
-      n, [] { return Scratch(); },
+      n, s.threads, [] { return Scratch(); },
       [&](std::size_t i, Scratch& scratch) {
         bool voted = false;
         auto own_index = [](std::uint32_t j) { return j; };
@@ -306,18 +275,7 @@ Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_
             scratch.local.assign(input, static_cast<std::uint32_t>(i), scratch.neighbors);
             scratch.weights.resize(scratch.local.size());
             scratch.local.weights(sigmoid, scratch.weights.data());
-            double best = std::numeric_limits<double>::infinity();
-            unsigned int best_k = 0;
-            for(unsigned int k = k_low[i]; k <= k_high[i]; ++k)
-            {
-              const double error = scratch.local.features(scratch.weights.data(), k, s.barycenter).error;
-              if(error < best - TIE_TOLERANCE)
-              {
-                best = error;
-                best_k = k;
-              }
-            }
-            chosen[i] = best_k;
+            chosen[i] = scratch.local.best_size(scratch.weights.data(), k_low[i], k_high[i], s.barycenter).k;
             cached[i] = 1;
           }
           if(chosen[i] == 0)
@@ -489,6 +447,13 @@ Normal_filter_summary filter_normals(PointRange& points, const CGAL_NP_CLASS& np
   {
     const internal::Neighbor_lists given =
       internal::neighbor_lists(get_parameter_reference(np, internal_np::neighborhoods), input.size());
+    summary = internal::filter_normals_all<ConcurrencyTag>(input, &given, settings);
+  }
+  else if constexpr(!is_default_parameter<CGAL_NP_CLASS, internal_np::neighbor_indices_t>::value)
+  {
+    const internal::Neighbor_lists given =
+      internal::neighbor_lists(get_parameter_reference(np, internal_np::neighbor_indices),
+                               get_parameter_reference(np, internal_np::neighbor_offsets), input.size());
     summary = internal::filter_normals_all<ConcurrencyTag>(input, &given, settings);
   }
   else

@@ -9,16 +9,7 @@
 #
 # A shard that stops early can be rerun with the same command: --resume keeps its finished models.
 set -euo pipefail
-if [ $# -lt 3 ]; then
-  sed -n '5,11p' "$0" >&2
-  exit 2
-fi
-data=$1 out=$2 shards=$3
-shift 3
-repository=$(basename "$data")
-if [ $# -gt 0 ] && [ "$1" != "--" ]; then repository=$1; shift; fi
-[ $# -gt 0 ] && [ "$1" = "--" ] && shift
-tool=${SIGMOID_NEIGHBORHOODS:-sigmoid-neighborhoods}
+. "$(dirname "$0")/shard_arguments.sh"
 
 mkdir -p "$out"
 seq 1 "$shards" | parallel --line-buffer --halt soon,fail=1 "$@" \

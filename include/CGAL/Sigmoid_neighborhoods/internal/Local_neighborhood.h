@@ -8,7 +8,10 @@
 
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
 #include <CGAL/Sigmoid_neighborhoods/weighted_covariance.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/K_neighbor_query.h>
+#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Oriented_points.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
 #include <CGAL/number_utils.h>
 #include <boost/property_map/property_map.hpp>
@@ -19,6 +22,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -26,50 +30,6 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 namespace internal {
-
-// The input as the computation sees it: double coordinates and unit normals.
-struct Oriented_points
-{
-  std::vector<Double_point> points;
-  std::vector<Eigen::Vector3d> normals;
-  std::size_t size() const { return points.size(); }
-};
-
-// Copies a point range through its maps, rejecting what the paper's features are undefined for.
-// Normals that are unit to 1e-12 are used as given (normalising again would move their last bit).
-template <typename PointRange, typename PointMap, typename NormalMap>
-Oriented_points copy_oriented_points(const PointRange& range, PointMap point_map, NormalMap normal_map)
-{
-  Oriented_points result;
-  // reserved: growing by doubling would hold the old and the new buffer at once
-  const auto size = std::distance(std::begin(range), std::end(range));
-  result.points.reserve(std::size_t(size));
-  result.normals.reserve(std::size_t(size));
-  std::size_t i = 0;
-  for(const auto& item : range)
-  {
-    const auto& p = get(point_map, item);
-    const auto& n = get(normal_map, item);
-    const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
-    Eigen::Vector3d normal(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z()));
-    if(!(std::isfinite(x) && std::isfinite(y) && std::isfinite(z)))
-      throw std::invalid_argument("point " + std::to_string(i) + " has a non-finite coordinate");
-    // Beyond this, squared distances overflow.
-    if(std::abs(x) > 1e150 || std::abs(y) > 1e150 || std::abs(z) > 1e150)
-      throw std::invalid_argument("point " + std::to_string(i) + " has a coordinate beyond 1e150");
-    if(!normal.allFinite())
-      throw std::invalid_argument("point " + std::to_string(i) + " has a non-finite normal");
-    const double squared_norm = normal.squaredNorm();
-    if(!(squared_norm > 0.))
-      throw std::invalid_argument("point " + std::to_string(i) + " has a zero normal");
-    if(std::abs(squared_norm - 1.) > 1e-12)
-      normal /= std::sqrt(squared_norm);
-    result.points.emplace_back(x, y, z);
-    result.normals.push_back(normal);
-    ++i;
-  }
-  return result;
-}
 
 // The neighborhood N_i(k_max) of one point: offsets p_j - p_i, normal angles, and the running
 // largest squared radius, from which every (a, b, k) with k <= k_max is evaluated.
@@ -157,6 +117,30 @@ public:
     return dimensionality_features(covariance(w, k, barycenter));
   }
 
+  // The size k in [k_first, k_last] of least E_dim with the weights w, by the tie rule of SPEC §5
+  // (sizes ascending, a smaller error by more than TIE_TOLERANCE replaces the best): the one scan
+  // over k of every algorithm. k = 0 and E = +inf when every size is degenerate.
+  struct Best_size
+  {
+    double error = std::numeric_limits<double>::infinity();
+    unsigned int k = 0;
+  };
+
+  Best_size best_size(const double* w, unsigned int k_first, unsigned int k_last, Barycenter barycenter) const
+  {
+    Best_size best;
+    for(unsigned int k = k_first; k <= k_last; ++k)
+    {
+      const double error = features(w, k, barycenter).error;
+      if(error < best.error - TIE_TOLERANCE)
+      {
+        best.error = error;
+        best.k = k;
+      }
+    }
+    return best;
+  }
+
 private:
   std::vector<Eigen::Vector3d> m_offsets;
   std::vector<double> m_angles;
@@ -166,6 +150,31 @@ private:
   double m_unit_scale = 1.;
   double m_largest_angle = 0.;
 };
+
+// Runs `compute(i, local, scratch)` on the neighborhood N_i(k) of every point i from the shared
+// `query`, one `scratch` per thread from `make_scratch()`, and passes the results to
+// `sink(i, result)` in index order, a block at a time (for_each_index_in_blocks()).
+template <typename ConcurrencyTag, typename Result, typename MakeScratch, typename Compute, typename Sink>
+void for_each_neighborhood(const Oriented_points& input, const Neighbor_query& query, unsigned int k,
+                           unsigned int threads, const MakeScratch& make_scratch, const Compute& compute,
+                           const Sink& sink)
+{
+  typedef decltype(make_scratch()) Inner;
+  struct Scratch
+  {
+    std::vector<Neighbor> neighbors;
+    Local_neighborhood local;
+    Inner inner;
+  };
+  for_each_index_in_blocks<ConcurrencyTag, Result>(
+    input.size(), threads, [&make_scratch] { return Scratch{{}, {}, make_scratch()}; },
+    [&](std::size_t i, Scratch& s) {
+      query.query(static_cast<std::uint32_t>(i), k, s.neighbors);
+      s.local.assign(input, static_cast<std::uint32_t>(i), s.neighbors);
+      return compute(i, static_cast<const Local_neighborhood&>(s.local), s.inner);
+    },
+    sink);
+}
 
 } // namespace internal
 } // namespace Sigmoid_neighborhoods

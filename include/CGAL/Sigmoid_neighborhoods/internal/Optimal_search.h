@@ -8,6 +8,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/Optimal_sigmoid_neighborhood.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Local_neighborhood.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Symmetric_eigenvalues_3.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/approximate_cosine.h>
@@ -25,14 +26,29 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
-/// A triple replaces the best one only when its error is smaller by more than this (SPEC §5).
-constexpr double TIE_TOLERANCE = 1e-12;
-
 namespace internal {
 
 // An approximation of E_dim is within its own margin of the exact value (see approximation_margin()),
 // at most this one.
 constexpr double LARGEST_APPROXIMATION_MARGIN = 1e-4;
+// The rounding of one evaluation of E_dim, far above its few ulps of ln 3.
+constexpr double ENTROPY_ROUNDING = 1e-12;
+// Below this trace (at unit scale), the exact path's covariance nears the subnormal numbers and
+// loses the accuracy that the margins assume.
+constexpr double SMALLEST_TRUSTED_TRACE = 1e-280;
+// An approximation is not trusted where the moments cancel by more than a factor 1 / this: the
+// rounding of the two paths then exceeds what the margins assume.
+constexpr double LARGEST_CANCELLATION = 1e-3;
+// Nor where lambda1 - lambda3 is below this share of lambda1: three nearly equal eigenvalues, where
+// the closed form's error bound degrades.
+constexpr double SMALLEST_EIGENVALUE_SPREAD = 1e-3;
+// Nor where the approximate weights move the eigenvalues by more than this share of lambda1.
+constexpr double LARGEST_WEIGHT_NOISE = 1e-9;
+// The rounding of the covariance from moments and of the exact two-pass covariance, relative to
+// what cancelled: 100 eps, rounded up.
+constexpr double COVARIANCE_ROUNDING = 1e-13;
+// A trace within this share of s0 r^2 of the degenerate threshold is decided by the exact path.
+constexpr double DEGENERATE_TRACE_MARGIN = 1e-6;
 
 // The search of SPEC §5 at every point: one k_max query per point, every (a, b, k) of the grid
 // evaluated from it, with the result of the plain loop bit for bit. Two things save time:
@@ -49,8 +65,7 @@ class Optimal_search
 public:
   struct Scratch
   {
-    std::vector<Neighbor> neighbors;
-    Local_neighborhood local;
+    const Local_neighborhood* local = nullptr; // of the point being searched
     std::vector<double> arguments; // pair-major, weight_stride() per pair: Cosine_sigmoid::transition_argument()
     std::vector<double> weights;   // pair-major, weight_stride() per pair: exact, where has_weights says so
     std::vector<unsigned char> has_weights;
@@ -68,8 +83,8 @@ public:
     std::size_t first_all_ones = 0; // the first pair with all weights 1 not repeating an earlier one
   };
 
-  Optimal_search(const Oriented_points& input, const Search_settings& settings)
-    : m_input(input), m_settings(settings), m_sigmoids(settings.sigmoids()), m_query(input.points)
+  explicit Optimal_search(const Search_settings& settings)
+    : m_settings(settings), m_sigmoids(settings.sigmoids())
   {
     for(std::size_t p = 0; p < m_sigmoids.size(); ++p)
       if(m_sigmoids[p].is_equal_weights())
@@ -96,12 +111,12 @@ public:
     return s;
   }
 
-  Optimal_sigmoid_neighborhood operator()(std::uint32_t i, Scratch& s) const
+  // The search on N_i(k_max), `local`, which must outlive the call.
+  Optimal_sigmoid_neighborhood operator()(const Local_neighborhood& local, Scratch& s) const
   {
     const unsigned int k_min = m_settings.k_min, k_max = m_settings.k_max;
     const std::size_t pairs = m_sigmoids.size();
-    m_query.query(i, k_max, s.neighbors);
-    s.local.assign(m_input, i, s.neighbors);
+    s.local = &local;
     point_columns(s);
     std::fill(s.computed.begin(), s.computed.end(), 0);
     s.first_all_ones = pairs;
@@ -151,20 +166,12 @@ public:
     else
     {
       const std::vector<double> ones(k_max + 1, 1.);
-      for(unsigned int k = k_min; k <= k_max; ++k)
-      {
-        const double error = s.local.features(ones.data(), k, m_settings.barycenter).error;
-        if(error < result.error_equal - TIE_TOLERANCE)
-        {
-          result.error_equal = error;
-          result.k_equal = k;
-        }
-      }
+      const Local_neighborhood::Best_size equal = local.best_size(ones.data(), k_min, k_max, m_settings.barycenter);
+      result.error_equal = equal.error;
+      result.k_equal = equal.k;
     }
     return result;
   }
-
-  std::size_t size() const { return m_input.size(); }
 
 private:
   // The best triple so far of a scan: its error is known to lie in [low, high], and is exact once
@@ -184,7 +191,7 @@ private:
       low = new_low;
       high = new_high;
       // E~ - M >= high - tol follows from -ln(squares) >= high - tol + M (+ 1e-12 for rounding)
-      hopeless_squares = std::exp(-(high - TIE_TOLERANCE + LARGEST_APPROXIMATION_MARGIN + 1e-12));
+      hopeless_squares = std::exp(-(high - TIE_TOLERANCE + LARGEST_APPROXIMATION_MARGIN + ENTROPY_ROUNDING));
     }
   };
 
@@ -199,7 +206,7 @@ private:
   {
     const std::size_t m = m_settings.k_max + 1, none = m_sigmoids.size();
     double* t = &s.arguments[p * weight_stride()];
-    const bool all_ones = s.local.transition_arguments(m_sigmoids[p], t);
+    const bool all_ones = s.local->transition_arguments(m_sigmoids[p], t);
     s.has_weights[p] = 0;
     s.shared[p] = 0;
     s.source[p] = p;
@@ -252,7 +259,7 @@ private:
     const double noise = closed_form_relative_error((std::min)(linearity, planarity)) + covariance_noise;
     const double delta = 3. * noise;
     // ln(1 / delta) <= -e ln 2 for delta >= 2^e: no logarithm needed
-    return 3. * delta * (1. - std::ilogb(delta) * 0.6931471805599454) + 1e-12;
+    return 3. * delta * (1. - std::ilogb(delta) * 0.6931471805599454) + ENTROPY_ROUNDING;
   }
 
   double exact_value(Scratch& s, Running_minimum& best) const
@@ -327,7 +334,7 @@ private:
           w[j] = Cosine_sigmoid::weight_of_argument(t[j]);
         s.has_weights[p] = 1;
       }
-      s.exact[slot] = s.local.features(w, k, m_settings.barycenter);
+      s.exact[slot] = s.local->features(w, k, m_settings.barycenter);
       s.computed[slot] = 1;
     }
     return s.exact[slot];
@@ -348,7 +355,7 @@ private:
   // next, solved in batches that Eigen vectorizes.
   void approximate_shares(Scratch& s, const double* t, std::size_t shared, std::size_t first_slot) const
   {
-    const Local_neighborhood& local = s.local;
+    const Local_neighborhood& local = *s.local;
     const unsigned int k_min = m_settings.k_min, k_max = m_settings.k_max;
     const unsigned int k_first = (std::max)(k_min, unsigned(shared));
     const std::size_t sizes = m_settings.number_of_sizes();
@@ -436,7 +443,7 @@ private:
 
     // Below this, the exact path's covariance, at the input's scale, nears the subnormal numbers
     // and loses the accuracy that the margins assume.
-    const double smallest_trace = 1e-280 * local.unit_scale() * local.unit_scale();
+    const double smallest_trace = SMALLEST_TRUSTED_TRACE * local.unit_scale() * local.unit_scale();
     for(std::size_t c = first_solved; c < end_solved; ++c)
     {
       if(approx[c] != NOT_EVALUATED)
@@ -450,14 +457,14 @@ private:
       // much (Weyl); at most 1e-9 l1 where trusted.
       const double weight_noise = 4. * APPROXIMATE_WEIGHT_ERROR * column(TRANSITION_SIZE)[c] * column(RADIUS)[c];
       if(!(column(TRACE_MARGIN)[c] > 0.) || !(trace > smallest_trace) || !has_unscaled_eigenvalues(trace) ||
-         !(l1 > 0.) || l1 - l3 < 1e-3 * l1 || weight_noise > 1e-9 * l1)
+         !(l1 > 0.) || l1 - l3 < SMALLEST_EIGENVALUE_SPREAD * l1 || weight_noise > LARGEST_WEIGHT_NOISE * l1)
       {
         approx[c] = std::numeric_limits<double>::quiet_NaN(); // not trusted
         continue;
       }
       const double inverse = 1. / l1;
       shares[c] = {{(l1 - l2) * inverse, (l2 - l3) * inverse, l3 * inverse,
-                    (1e-13 * column(CANCELLATION)[c] + weight_noise) * inverse}};
+                    (COVARIANCE_ROUNDING * column(CANCELLATION)[c] + weight_noise) * inverse}};
     }
   }
 
@@ -474,7 +481,7 @@ private:
   // form neither overflows nor underflows.
   void point_columns(Scratch& s) const
   {
-    const Local_neighborhood& local = s.local;
+    const Local_neighborhood& local = *s.local;
     static_assert(int(decltype(s.moments)::RowsAtCompileTime) == int(NUMBER_OF_MOMENTS), "one row per moment");
     const unsigned int k_min = m_settings.k_min, k_max = m_settings.k_max;
     s.moments.resize(NUMBER_OF_MOMENTS, k_max + 1);
@@ -544,7 +551,7 @@ private:
       // the size of the terms that cancelled: the rounding error of C is about 1e-16 of it
       const Batch cancelled = column(SXX) + column(SYY) + column(SZZ) + s0 * (cx * cx + cy * cy + cz * cz);
       column(TRACE) = trace;
-      column(TRACE_MARGIN) = trace - (1e-6 * s0 * column(RADIUS)).max(1e-3 * cancelled);
+      column(TRACE_MARGIN) = trace - (DEGENERATE_TRACE_MARGIN * s0 * column(RADIUS)).max(LARGEST_CANCELLATION * cancelled);
       Batch l1, l2, l3;
       unscaled_symmetric_eigenvalues_3<Batch>(c00, c10, c20, c11, c21, c22, l1, l2, l3);
       l2 = l2.max(0.);
@@ -556,22 +563,22 @@ private:
     }
   }
 
-  const Oriented_points& m_input;
   Search_settings m_settings;
   std::vector<Cosine_sigmoid> m_sigmoids;
   int m_equal_pair = -1;
-  K_neighbor_query m_query;
 };
 
-// Runs the search on every point; `sink(i, record)` is called in index order.
+// Runs the search on every point, on the shared `query`; `sink(i, record)` is called in index order.
 template <typename ConcurrencyTag, typename Sink>
-void optimal_search_all(const Oriented_points& input, const Search_settings& settings, const Sink& sink)
+void optimal_search_all(const Oriented_points& input, const Neighbor_query& query, const Search_settings& settings,
+                        const Sink& sink)
 {
   check_enough_points(input.size(), settings.k_max);
-  const Optimal_search search(input, settings);
-  for_each_index_in_blocks<ConcurrencyTag, Optimal_sigmoid_neighborhood>(
-    input.size(), [&search] { return search.make_scratch(); },
-    [&search](std::size_t i, Optimal_search::Scratch& s) { return search(static_cast<std::uint32_t>(i), s); },
+  check_neighborhood_size(query, settings.k_max);
+  const Optimal_search search(settings);
+  for_each_neighborhood<ConcurrencyTag, Optimal_sigmoid_neighborhood>(
+    input, query, settings.k_max, settings.threads, [&search] { return search.make_scratch(); },
+    [&search](std::size_t, const Local_neighborhood& local, Optimal_search::Scratch& s) { return search(local, s); },
     sink);
 }
 

@@ -8,6 +8,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
+#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -17,23 +18,6 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  the default grid of `a` and `b`: `{0, pi/6, pi/3, pi/2, 2pi/3, 5pi/6, pi}` (SPEC §5).
-*/
-inline std::vector<double> default_angle_grid()
-{
-  std::vector<double> grid;
-  for(int i = 0; i <= 6; ++i)
-    grid.push_back(i == 6 ? internal::PI : i * internal::PI / 6.);
-  return grid;
-}
-
-/// The default smallest `k` (SPEC §5).
-constexpr unsigned int DEFAULT_K_MIN = 6;
-/// The default largest `k` (SPEC §5).
-constexpr unsigned int DEFAULT_K_MAX = 20;
-
 namespace internal {
 
 struct Search_settings
@@ -42,6 +26,7 @@ struct Search_settings
   unsigned int k_min = DEFAULT_K_MIN, k_max = DEFAULT_K_MAX;
   Barycenter barycenter = Barycenter::WEIGHTED;
   double angle_tolerance = DEFAULT_ANGLE_TOLERANCE;
+  unsigned int threads = 0; // of a call with Parallel_tag; 0: the default
 
   // The (a, b) pairs with a <= b, a ascending then b ascending: the visiting order of SPEC §5.
   std::vector<Cosine_sigmoid> sigmoids() const
@@ -60,13 +45,20 @@ struct Search_settings
 inline std::vector<double> checked_grid(std::vector<double> grid, const char* name)
 {
   for(double v : grid)
-    if(!(v >= 0. && v <= PI))
+    if(!(v >= 0. && v <= CGAL_PI))
       throw std::invalid_argument(std::string(name) + " grid values must lie in [0, pi], got " + std::to_string(v));
   std::sort(grid.begin(), grid.end());
   grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
   if(grid.empty())
     throw std::invalid_argument(std::string(name) + " grid is empty");
   return grid;
+}
+
+// The named parameter `number_of_threads`, 0 (the OpenMP or TBB default) when absent.
+template <typename NamedParameters>
+unsigned int number_of_threads(const NamedParameters& np)
+{
+  return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::number_of_threads), 0u);
 }
 
 template <typename NamedParameters>
@@ -81,10 +73,11 @@ Search_settings search_settings(const NamedParameters& np)
   s.b_grid = checked_grid(choose_parameter(get_parameter(np, internal_np::b_grid), default_angle_grid()), "b");
   s.barycenter = choose_parameter(get_parameter(np, internal_np::barycenter), Barycenter::WEIGHTED);
   s.angle_tolerance = choose_parameter(get_parameter(np, internal_np::angle_tolerance), DEFAULT_ANGLE_TOLERANCE);
+  s.threads = number_of_threads(np);
   if(!(s.k_min >= 1 && s.k_min <= s.k_max))
     throw std::invalid_argument("the neighborhood sizes must satisfy 1 <= k_min <= k_max, got k_min = " +
                                 std::to_string(s.k_min) + ", k_max = " + std::to_string(s.k_max));
-  if(!(s.angle_tolerance >= 0. && s.angle_tolerance < PI))
+  if(!(s.angle_tolerance >= 0. && s.angle_tolerance < CGAL_PI))
     throw std::invalid_argument("angle tolerance must be in [0, pi), got " + std::to_string(s.angle_tolerance));
   if(s.a_grid.front() > s.b_grid.back())
     throw std::invalid_argument("the a and b grids have no pair with a <= b");

@@ -6,7 +6,8 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_MESH_POINTS_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_MESH_POINTS_H
 
-#include <CGAL/Sigmoid_neighborhoods/internal/Local_neighborhood.h>
+#include <CGAL/Sigmoid_neighborhoods/Mesh_points_summary.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Oriented_points.h>
 
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -21,23 +22,6 @@
 
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  how the vertices of a mesh became the points of the computation (SPEC §1): one point per
-  vertex with an incident face and a defined normal, vertices at the same position merged
-  (the one of smallest index kept).
-*/
-struct Mesh_points_summary
-{
-  std::size_t vertices = 0;          ///< vertices of the mesh
-  std::size_t points = 0;            ///< distinct points evaluated
-  std::size_t merged_duplicates = 0; ///< vertices merged into an earlier one at the same position
-  std::size_t isolated_vertices = 0; ///< vertices without an incident face, not evaluated
-  std::size_t undefined_normals = 0; ///< vertices whose faces are all degenerate (zero normal), not evaluated
-
-  std::size_t dropped_vertices() const { return isolated_vertices + undefined_normals; }
-};
 
 namespace internal {
 
@@ -85,13 +69,9 @@ Mesh_points<Point> mesh_points(const CGAL::Surface_mesh<Point>& mesh, const Name
       ++result.summary.isolated_vertices;
       continue;
     }
-    const Point& p = mesh.point(v);
-    if(!(std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) &&
-         std::isfinite(CGAL::to_double(p.z()))))
-      throw std::invalid_argument("vertex " + std::to_string(std::size_t(v)) + " has a non-finite coordinate");
-    const Vector_3 n = get(normals, v);
-    const double squared_norm = CGAL::to_double(n.squared_length());
-    if(!(squared_norm > 0.) || !std::isfinite(squared_norm))
+    checked_point(mesh.point(v), "vertex", std::size_t(v));
+    Eigen::Vector3d normal;
+    if(!unit_normal(get(normals, v), normal))
     {
       ++result.summary.undefined_normals;
       continue;
@@ -128,14 +108,10 @@ Mesh_points<Point> mesh_points(const CGAL::Surface_mesh<Point>& mesh, const Name
       ++result.summary.merged_duplicates;
       continue;
     }
-    const Point& p = mesh.point(v);
-    const Vector_3 n = get(normals, v);
-    Eigen::Vector3d normal(CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z()));
-    const double squared_norm = normal.squaredNorm();
-    if(std::abs(squared_norm - 1.) > 1e-12)
-      normal /= std::sqrt(squared_norm);
+    Eigen::Vector3d normal;
+    unit_normal(get(normals, v), normal);
     result.point_of_vertex[std::size_t(v)] = std::uint32_t(result.input.points.size());
-    result.input.points.emplace_back(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    result.input.points.push_back(checked_point(mesh.point(v), "vertex", std::size_t(v)));
     result.input.normals.push_back(normal);
   }
   for(Vertex_index v : candidates)

@@ -6,80 +6,169 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_PARALLEL_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_PARALLEL_H
 
+#include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 #include <CGAL/tags.h>
 
 #if defined(_OPENMP)
 #include <omp.h>
+#elif defined(CGAL_LINKED_WITH_TBB)
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #endif
 
+#include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
-#include <algorithm>
+#include <exception>
+#include <limits>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  `CGAL::Parallel_tag` when the package can run in parallel (OpenMP or TBB), otherwise
-  `CGAL::Sequential_tag`. CGAL's own alias only knows TBB.
-*/
-#if defined(_OPENMP) || defined(CGAL_LINKED_WITH_TBB)
-typedef CGAL::Parallel_tag Parallel_if_available_tag;
-#else
-typedef CGAL::Sequential_tag Parallel_if_available_tag;
-#endif
-
 namespace internal {
 
-// Runs `body(i, scratch)` for i in [0, n), with one `Scratch` per thread built by
-// `make_scratch()`. Every index is processed by one call whose result depends on `i` only,
-// so the outcome is the same, bit for bit, for any number of threads. `body` must not throw.
-template <typename ConcurrencyTag, typename MakeScratch, typename Body>
-void for_each_index(std::size_t n, const MakeScratch& make_scratch, const Body& body)
+template <typename ConcurrencyTag>
+constexpr bool is_parallel()
 {
+  return std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+}
+
+// CGAL's contract (CGAL::for_each): `Parallel_tag` runs in parallel or does not compile.
+template <typename ConcurrencyTag>
+constexpr void check_concurrency_tag()
+{
+#if !defined(_OPENMP) && !defined(CGAL_LINKED_WITH_TBB)
+  static_assert(!is_parallel<ConcurrencyTag>(),
+                "CGAL::Parallel_tag needs OpenMP or TBB (CGAL_LINKED_WITH_TBB): use CGAL::Sequential_tag "
+                "or CGAL::Sigmoid_neighborhoods::Parallel_if_available_tag");
+#endif
+}
+
+// The threads one call runs on: `requested`, or the OpenMP or TBB default when it is 0.
+template <typename ConcurrencyTag>
+std::size_t thread_count(unsigned int requested)
+{
+  check_concurrency_tag<ConcurrencyTag>();
+  if(!is_parallel<ConcurrencyTag>())
+    return 1;
+  if(requested != 0)
+    return requested;
 #if defined(_OPENMP)
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+  return static_cast<std::size_t>((std::max)(omp_get_max_threads(), 1));
+#elif defined(CGAL_LINKED_WITH_TBB)
+  return static_cast<std::size_t>((std::max)(tbb::this_task_arena::max_concurrency(), 1));
+#else
+  return 1;
+#endif
+}
+
+// Runs `body(i, scratch)` for i in [0, n) on `threads` threads (0: the default), with one
+// `Scratch` per thread built by `make_scratch()`. Every index is processed by one call whose
+// result depends on `i` only, so the outcome is the same, bit for bit, for any number of threads.
+// An exception thrown by `body` (or `make_scratch`) stops the loop and is rethrown to the caller:
+// the one of the smallest index among those that threw.
+template <typename ConcurrencyTag, typename MakeScratch, typename Body>
+void for_each_index(std::size_t n, unsigned int threads, const MakeScratch& make_scratch, const Body& body)
+{
+  const std::size_t thread_number = thread_count<ConcurrencyTag>(threads);
+#if defined(_OPENMP)
+  if(is_parallel<ConcurrencyTag>() && n > 0)
   {
+    typedef decltype(make_scratch()) Scratch;
     const std::int64_t count = static_cast<std::int64_t>(n);
-#pragma omp parallel
+    std::exception_ptr error;
+    std::int64_t error_index = (std::numeric_limits<std::int64_t>::max)();
+    std::atomic<bool> failed(false);
+    // An exception must not leave an OpenMP region: each is caught where it is thrown, recorded,
+    // and the remaining indices are skipped.
+    auto record = [&](std::int64_t i) {
+#pragma omp critical(sigmoid_neighborhoods_exception)
+      if(i < error_index)
+      {
+        error_index = i;
+        error = std::current_exception();
+      }
+      failed.store(true, std::memory_order_relaxed);
+    };
+#pragma omp parallel num_threads(static_cast<int>(thread_number))
     {
-      auto scratch = make_scratch();
+      std::optional<Scratch> scratch;
+      try
+      {
+        scratch.emplace(make_scratch());
+      }
+      catch(...)
+      {
+        record(-1);
+      }
+      // every thread reaches the worksharing loop, even one whose scratch failed
 #pragma omp for schedule(dynamic, 16)
       for(std::int64_t i = 0; i < count; ++i)
-        body(static_cast<std::size_t>(i), scratch);
+      {
+        if(failed.load(std::memory_order_relaxed))
+          continue;
+        try
+        {
+          body(static_cast<std::size_t>(i), *scratch);
+        }
+        catch(...)
+        {
+          record(i);
+        }
+      }
     }
+    if(error)
+      std::rethrow_exception(error);
+    return;
+  }
+#elif defined(CGAL_LINKED_WITH_TBB)
+  if(is_parallel<ConcurrencyTag>() && n > 0)
+  {
+    typedef decltype(make_scratch()) Scratch;
+    // TBB cancels the loop on the first exception and rethrows it to the caller.
+    tbb::enumerable_thread_specific<Scratch> scratches(make_scratch);
+    auto run = [&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16), [&](const tbb::blocked_range<std::size_t>& r) {
+        Scratch& scratch = scratches.local();
+        for(std::size_t i = r.begin(); i != r.end(); ++i)
+          body(i, scratch);
+      });
+    };
+    tbb::task_arena arena(static_cast<int>(thread_number));
+    arena.execute(run);
     return;
   }
 #endif
+  (void)thread_number;
   auto scratch = make_scratch();
   for(std::size_t i = 0; i < n; ++i)
     body(i, scratch);
 }
 
+// Points per thread in a block of for_each_index_in_blocks(): enough that the last chunks of a
+// block keep few threads waiting, few enough that a block of results stays small next to the
+// input, even at 1e5 points.
+constexpr std::size_t BLOCK_SIZE_PER_THREAD = 1024;
+
 // The same over blocks of indices: `compute(i, scratch)` returns the result of index i, and
 // `sink(i, result)` receives the results in index order, one block at a time, so that memory
 // holds one block of results rather than all of them.
 template <typename ConcurrencyTag, typename Result, typename MakeScratch, typename Compute, typename Sink>
-void for_each_index_in_blocks(std::size_t n, const MakeScratch& make_scratch, const Compute& compute,
-                              const Sink& sink)
+void for_each_index_in_blocks(std::size_t n, unsigned int threads, const MakeScratch& make_scratch,
+                              const Compute& compute, const Sink& sink)
 {
-  // 1024 points per thread: enough that the last chunks of a block keep few threads waiting, few
-  // enough that a block of results stays small next to the input, even at 1e5 points.
-  std::size_t threads = 1;
-#if defined(_OPENMP)
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
-    threads = static_cast<std::size_t>((std::max)(omp_get_max_threads(), 1));
-#endif
-  const std::size_t BLOCK = 1024 * threads;
+  const std::size_t block = BLOCK_SIZE_PER_THREAD * thread_count<ConcurrencyTag>(threads);
   std::vector<Result> results;
-  for(std::size_t start = 0; start < n; start += BLOCK)
+  for(std::size_t start = 0; start < n; start += block)
   {
-    const std::size_t count = (std::min)(BLOCK, n - start);
+    const std::size_t count = (std::min)(block, n - start);
     results.resize(count);
-    for_each_index<ConcurrencyTag>(count, make_scratch, [&](std::size_t i, auto& scratch) {
+    for_each_index<ConcurrencyTag>(count, threads, make_scratch, [&](std::size_t i, auto& scratch) {
       results[i] = compute(start + i, scratch);
     });
     for(std::size_t i = 0; i < count; ++i)

@@ -1,0 +1,46 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_ORIENTED_POINT_SET_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_IO_ORIENTED_POINT_SET_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  a point set with oriented unit normals read from a file, and how it was obtained (SPEC §1).
+  Returned by `read_oriented_point_set()`; its `points` and `normals` go to
+  `compute_optimal_sigmoid_neighborhoods()` with `CGAL::make_property_map()` maps over the indices
+  `0, ..., points.size() - 1`, as the command-line tool does.
+*/
+struct Oriented_point_set
+{
+  /// the kernel of the points and normals
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+  /// the point type
+  typedef Kernel::Point_3 Point_3;
+  /// the normal type
+  typedef Kernel::Vector_3 Vector_3;
+
+  std::vector<Point_3> points;   ///< distinct points, in input order
+  std::vector<Vector_3> normals; ///< unit normals, one per point
+  bool is_mesh = false;                 ///< read from faces; normals are vertex normals
+  bool normals_estimated = false;       ///< the file had no normals: jet fitting + MST orientation
+  std::size_t input_vertices = 0;       ///< vertices or points in the file
+  std::size_t merged_duplicates = 0;    ///< merged into an earlier point at the same position
+  std::size_t dropped_vertices = 0;     ///< mesh vertices without a face or with an undefined normal
+  std::size_t unoriented_normals = 0;   ///< estimated normals the MST could not reach (kept as estimated)
+};
+
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_ORIENTED_POINT_SET_H

@@ -1,0 +1,35 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_READ_PLY_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_READ_PLY_H
+
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/Polygon_soup.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/cgal_5_5_workarounds.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/input_file.h>
+
+#include <CGAL/IO/PLY.h>
+
+#include <string>
+
+/// \cond SKIP_IN_MANUAL
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+namespace internal {
+
+// The polygon soup of a PLY file (no faces: a point set, read by read_points_without_faces()):
+// CGAL's reader behind the header checks it needs (check_ply_header()).
+inline bool read_ply_soup(const Input_file& file, Polygon_soup& soup)
+{
+  check_ply_header(file.name, file.size);
+  return CGAL::IO::read_PLY(file.name, soup.points, soup.polygons);
+}
+
+} // namespace internal
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+/// \endcond
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_READ_PLY_H

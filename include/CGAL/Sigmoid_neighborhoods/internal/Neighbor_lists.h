@@ -1,0 +1,201 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_NEIGHBOR_LISTS_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_NEIGHBOR_LISTS_H
+
+#include <CGAL/Sigmoid_neighborhoods/parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+namespace internal {
+
+// Neighbor lists of all points, one after the other (compressed rows, pgeof's `nn` / `nn_ptr`):
+// the neighbors of point i are indices[offsets[i]] ... indices[offsets[i + 1] - 1].
+struct Neighbor_lists
+{
+  std::vector<std::size_t> offsets{0};
+  std::vector<std::uint32_t> indices;
+
+  std::size_t size() const { return offsets.size() - 1; }
+  std::size_t count(std::size_t i) const { return offsets[i + 1] - offsets[i]; }
+  const std::uint32_t* begin(std::size_t i) const { return indices.data() + offsets[i]; }
+  const std::uint32_t* end(std::size_t i) const { return indices.data() + offsets[i + 1]; }
+  std::size_t shortest() const
+  {
+    std::size_t result = size() == 0 ? 0 : count(0);
+    for(std::size_t i = 1; i < size(); ++i)
+      result = (std::min)(result, count(i));
+    return result;
+  }
+};
+
+template <typename Index>
+bool index_in_range(Index j, std::size_t n)
+{
+  if constexpr(std::is_signed<Index>::value)
+    if(j < 0)
+      return false;
+  return std::size_t(j) < n;
+}
+
+// Appends the caller's list of point i to `result`, checked: indices in range, never i itself.
+template <typename List>
+void append_checked_list(const List& list, std::size_t i, std::size_t n, Neighbor_lists& result)
+{
+  for(const auto& j : list)
+  {
+    if(!index_in_range(j, n))
+      throw std::invalid_argument("neighborhood of point " + std::to_string(i) + ": index " + std::to_string(j) +
+                                  " is out of range (" + std::to_string(n) + " points)");
+    if(std::size_t(j) == i)
+      throw std::invalid_argument("neighborhood of point " + std::to_string(i) + " contains the point itself");
+    result.indices.push_back(static_cast<std::uint32_t>(j));
+  }
+  result.offsets.push_back(result.indices.size());
+}
+
+// The caller's neighborhoods as a range of ranges of indices, checked.
+template <typename Lists>
+Neighbor_lists neighbor_lists(const Lists& lists, std::size_t n)
+{
+  if(std::size_t(std::distance(std::begin(lists), std::end(lists))) != n)
+    throw std::invalid_argument("the neighborhoods must hold one list per point (" + std::to_string(n) + ")");
+  Neighbor_lists result;
+  std::size_t i = 0;
+  for(const auto& list : lists)
+    append_checked_list(list, i++, n, result);
+  return result;
+}
+
+// The caller's neighborhoods in compressed rows, checked: `offsets` of size n + 1, starting at 0,
+// non-decreasing, ending at the size of `indices`.
+template <typename Indices, typename Offsets>
+Neighbor_lists neighbor_lists(const Indices& indices, const Offsets& offsets, std::size_t n)
+{
+  const std::vector<std::size_t> o(std::begin(offsets), std::end(offsets));
+  const std::vector<typename std::iterator_traits<decltype(std::begin(indices))>::value_type> ind(std::begin(indices),
+                                                                                                   std::end(indices));
+  if(o.size() != n + 1)
+    throw std::invalid_argument("the neighbor offsets must hold one entry per point and one more (" +
+                                std::to_string(n + 1) + "), got " + std::to_string(o.size()));
+  if(o.front() != 0 || o.back() != ind.size())
+    throw std::invalid_argument("the neighbor offsets must start at 0 and end at the number of neighbor indices (" +
+                                std::to_string(ind.size()) + ")");
+  for(std::size_t i = 0; i < n; ++i)
+    if(o[i + 1] < o[i])
+      throw std::invalid_argument("the neighbor offsets must not decrease (at point " + std::to_string(i) + ")");
+  Neighbor_lists result;
+  result.offsets.reserve(n + 1);
+  result.indices.reserve(ind.size());
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    struct Row
+    {
+      const typename decltype(ind)::value_type *b, *e;
+      auto begin() const { return b; }
+      auto end() const { return e; }
+    };
+    append_checked_list(Row{ind.data() + o[i], ind.data() + o[i + 1]}, i, n, result);
+  }
+  return result;
+}
+
+// The neighbor structure of one call: the caller's compressed rows (the named parameters
+// `neighbor_indices` and `neighbor_offsets`, both or neither), or the kd-tree.
+template <typename NamedParameters>
+Neighbor_query neighbor_query(const std::vector<Double_point>& points, const NamedParameters& np)
+{
+  using CGAL::parameters::get_parameter_reference;
+  using CGAL::parameters::is_default_parameter;
+  constexpr bool has_indices = !is_default_parameter<NamedParameters, internal_np::neighbor_indices_t>::value;
+  constexpr bool has_offsets = !is_default_parameter<NamedParameters, internal_np::neighbor_offsets_t>::value;
+  static_assert(has_indices == has_offsets, "neighbor_indices and neighbor_offsets are given together");
+  if constexpr(has_indices)
+  {
+    Neighbor_lists rows = neighbor_lists(get_parameter_reference(np, internal_np::neighbor_indices),
+                                         get_parameter_reference(np, internal_np::neighbor_offsets), points.size());
+    return Neighbor_query(points, std::move(rows.offsets), std::move(rows.indices));
+  }
+  else
+    return Neighbor_query(points);
+}
+
+// N_i(k) of every point needs k neighbors: rows the caller gave may be shorter.
+inline void check_neighborhood_size(const Neighbor_query& query, unsigned int k)
+{
+  if(query.is_given() && query.fewest_neighbors() < k)
+    throw std::invalid_argument("the given neighborhoods need at least " + std::to_string(k) +
+                                " neighbors per point, one has " + std::to_string(query.fewest_neighbors()));
+}
+
+// The ball neighborhoods {j != i : |p_j - p_i| <= radius} of all points, from the shared query.
+template <typename ConcurrencyTag>
+Neighbor_lists ball_neighborhoods(const Neighbor_query& query, double radius, unsigned int threads)
+{
+  const std::size_t n = query.size();
+  std::vector<std::vector<std::uint32_t>> lists(n);
+  for_each_index<ConcurrencyTag>(
+    n, threads, [] { return std::vector<Neighbor>(); },
+    [&](std::size_t i, std::vector<Neighbor>& found) {
+      query.query_ball(static_cast<std::uint32_t>(i), radius, found);
+      lists[i].reserve(found.size());
+      for(const Neighbor& x : found)
+        lists[i].push_back(x.index);
+    });
+  Neighbor_lists result;
+  result.offsets.reserve(n + 1);
+  for(const auto& list : lists)
+  {
+    result.indices.insert(result.indices.end(), list.begin(), list.end());
+    result.offsets.push_back(result.indices.size());
+  }
+  return result;
+}
+
+// The mean over all points of their mean distance to their k nearest other points.
+// (CGAL::compute_average_spacing() divides the sum of the k distances by k + 1, counting the
+// point itself: it is k / (k + 1) times this value.) Per-point means are summed in index order.
+template <typename ConcurrencyTag>
+double mean_neighbor_distance(const Neighbor_query& query, unsigned int k, unsigned int threads)
+{
+  const std::size_t n = query.size();
+  if(k < 1)
+    throw std::invalid_argument("the number of neighbors for the mean neighbor distance must be at least 1");
+  if(n < std::size_t(k) + 1)
+    throw std::invalid_argument("the mean distance to the " + std::to_string(k) + " nearest neighbors needs at least " +
+                                std::to_string(k + 1) + " points, got " + std::to_string(n));
+  std::vector<double> means(n);
+  for_each_index<ConcurrencyTag>(
+    n, threads, [] { return std::vector<Neighbor>(); },
+    [&](std::size_t i, std::vector<Neighbor>& found) {
+      query.query(static_cast<std::uint32_t>(i), k, found);
+      double sum = 0.;
+      for(const Neighbor& x : found)
+        sum += std::sqrt(x.squared_distance);
+      means[i] = sum / double(found.size());
+    });
+  double sum = 0.;
+  for(double m : means)
+    sum += m;
+  return sum / double(n);
+}
+
+} // namespace internal
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_NEIGHBOR_LISTS_H

@@ -1,0 +1,196 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_NEIGHBOR_QUERY_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_NEIGHBOR_QUERY_H
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Fuzzy_sphere.h>
+
+#include <boost/iterator/counting_iterator.hpp>
+#include <boost/property_map/property_map.hpp>
+#include <boost/iterator/function_output_iterator.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+namespace internal {
+
+typedef CGAL::Simple_cartesian<double> Double_kernel;
+typedef Double_kernel::Point_3 Double_point;
+
+struct Neighbor
+{
+  std::uint32_t index;
+  double squared_distance;
+};
+
+// The order of neighborhoods (SPEC §2): by squared distance, ties by index, so that they do not
+// depend on the tree's traversal.
+inline bool is_nearer(const Neighbor& x, const Neighbor& y)
+{
+  return x.squared_distance < y.squared_distance || (x.squared_distance == y.squared_distance && x.index < y.index);
+}
+
+// The point of an index, for CGAL's kd-trees over indices (Search_traits_adapter).
+struct Index_to_point_map
+{
+  typedef std::uint32_t key_type;
+  typedef Double_point value_type;
+  typedef const Double_point& reference;
+  typedef boost::readable_property_map_tag category;
+  const std::vector<Double_point>* points = nullptr;
+  friend reference get(const Index_to_point_map& map, key_type i) { return (*map.points)[i]; }
+};
+
+// The one neighbor structure of a point set: CGAL's kd-tree over the point indices, built once and
+// queried by every step for k nearest neighbors and for balls, both ordered by is_nearer(); or the
+// neighborhoods the caller computed, in compressed rows, whose first k entries are N_i(k).
+class Neighbor_query
+{
+  typedef CGAL::Search_traits_3<Double_kernel> Base_traits;
+  typedef CGAL::Search_traits_adapter<std::uint32_t, Index_to_point_map, Base_traits> Traits;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits> Base_search;
+  typedef Base_search::Tree Tree;
+  typedef Tree::Splitter Splitter;
+  typedef Base_search::Distance Distance;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits, Distance, Splitter, Tree> Search;
+  typedef CGAL::Fuzzy_sphere<Traits> Sphere;
+
+  // Fuzzy_sphere decides points on its boundary differently on its two code paths (`<=` and `<`),
+  // so the tree is asked for a ball larger by this relative margin and the decision taken exactly.
+  static constexpr double BALL_SEARCH_MARGIN = 1e-9;
+
+  // Keeps the points found within the exact radius (assignable, as the tree's output iterator must be).
+  struct Ball_collector
+  {
+    const std::vector<Double_point>* points;
+    std::uint32_t i;
+    double squared_radius;
+    std::vector<Neighbor>* result;
+    void operator()(std::uint32_t j) const
+    {
+      if(j == i)
+        return;
+      const Double_point &p = (*points)[i], &q = (*points)[j];
+      const double dx = q.x() - p.x(), dy = q.y() - p.y(), dz = q.z() - p.z();
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      if(d2 <= squared_radius)
+        result->push_back(Neighbor{j, d2});
+    }
+  };
+
+public:
+  // `points` must outlive the query.
+  explicit Neighbor_query(const std::vector<Double_point>& points)
+    : m_points(points), m_map{&points}, m_traits(m_map),
+      m_tree(boost::counting_iterator<std::uint32_t>(0),
+             boost::counting_iterator<std::uint32_t>(std::uint32_t(points.size())), Splitter(), m_traits)
+  {
+    m_tree.build(); // before any parallel query: queries on a built tree are read-only
+  }
+
+  // The caller's rows (checked by neighbor_lists()) instead of the tree: no tree is built.
+  Neighbor_query(const std::vector<Double_point>& points, std::vector<std::size_t> offsets,
+                 std::vector<std::uint32_t> indices)
+    : m_points(points), m_map{&points}, m_traits(m_map), m_tree(Splitter(), m_traits), m_offsets(std::move(offsets)),
+      m_indices(std::move(indices)), m_given(true)
+  {}
+
+  // true when the neighborhoods are the caller's rows
+  bool is_given() const { return m_given; }
+
+  // The fewest neighbors query() gives any point for a large k.
+  std::size_t fewest_neighbors() const
+  {
+    if(!m_given)
+      return m_points.empty() ? 0 : m_points.size() - 1;
+    std::size_t result = m_points.empty() ? 0 : m_offsets[1] - m_offsets[0];
+    for(std::size_t i = 1; i < m_points.size(); ++i)
+      result = (std::min)(result, m_offsets[i + 1] - m_offsets[i]);
+    return result;
+  }
+
+  // The `k` nearest points of point `i` other than `i` itself (|result| = min(k, n - 1)),
+  // ordered by is_nearer(). Thread-safe.
+  void query(std::uint32_t i, unsigned int k, std::vector<Neighbor>& result) const
+  {
+    if(m_given)
+    {
+      // the first k entries of the row, in the caller's order
+      result.clear();
+      const Double_point& p = m_points[i];
+      const std::size_t end = (std::min)(m_offsets[i] + k, m_offsets[i + 1]);
+      for(std::size_t e = m_offsets[i]; e < end; ++e)
+      {
+        const std::uint32_t j = m_indices[e];
+        const Double_point& q = m_points[j];
+        const double dx = q.x() - p.x(), dy = q.y() - p.y(), dz = q.z() - p.z();
+        result.push_back(Neighbor{j, dx * dx + dy * dy + dz * dz});
+      }
+      return;
+    }
+    const std::size_t n = m_points.size();
+    const std::size_t wanted = (std::min)(std::size_t(k), n - 1);
+    // One more than needed (k others + i itself + 1) tells whether a tie crosses the boundary.
+    std::size_t asked = (std::min)(wanted + 2, n);
+    for(;;)
+    {
+      result.clear();
+      // unsorted: the one sort is ours, with the tie rule
+      Search search(m_tree, m_points[i], static_cast<unsigned int>(asked), 0., true, Distance(m_map), false);
+      for(const auto& found : search)
+        result.push_back(Neighbor{found.first, found.second});
+      std::sort(result.begin(), result.end(), is_nearer);
+      const double farthest = result.empty() ? 0. : result.back().squared_distance;
+      result.erase(std::remove_if(result.begin(), result.end(),
+                                  [i](const Neighbor& x) { return x.index == i; }),
+                   result.end());
+      // Every point closer than the farthest returned one is in `result`. The selection is
+      // exact unless points at the k-th distance may remain outside: then ask for more.
+      if(wanted == 0 || asked >= n || result.size() < wanted ||
+         result[wanted - 1].squared_distance < farthest)
+        break;
+      asked = (std::min)(2 * asked, n);
+    }
+    result.resize((std::min)(result.size(), wanted));
+  }
+
+  // The points j != i with |p_j - p_i|^2 <= radius^2, ordered by is_nearer(). Thread-safe.
+  void query_ball(std::uint32_t i, double radius, std::vector<Neighbor>& result) const
+  {
+    CGAL_precondition(!m_given);
+    result.clear();
+    const Sphere sphere(i, radius * (1. + BALL_SEARCH_MARGIN), 0., m_traits);
+    m_tree.search(boost::make_function_output_iterator(Ball_collector{&m_points, i, radius * radius, &result}), sphere);
+    std::sort(result.begin(), result.end(), is_nearer);
+  }
+
+  std::size_t size() const { return m_points.size(); }
+  const std::vector<Double_point>& points() const { return m_points; }
+
+private:
+  const std::vector<Double_point>& m_points;
+  Index_to_point_map m_map;
+  Traits m_traits;
+  Tree m_tree;
+  std::vector<std::size_t> m_offsets;
+  std::vector<std::uint32_t> m_indices;
+  bool m_given = false;
+};
+
+} // namespace internal
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_NEIGHBOR_QUERY_H
