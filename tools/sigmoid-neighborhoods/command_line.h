@@ -56,6 +56,9 @@ struct Usage_error : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
+// argv[0] is the program and argv[1] the command: a command's own arguments start here.
+constexpr int FIRST_COMMAND_ARGUMENT = 2;
+
 // `--name value` options and positional arguments; every option must be known.
 class Arguments
 {
@@ -233,12 +236,14 @@ inline void create_output_folder(const std::string& folder, const std::string& s
     throw Usage_error("cannot create " + folder + ": " + ec.message());
 }
 
-// The suffix of write_file_atomically's temporary files: ".tmp." and the writer's process id.
+// The suffix of write_file_atomically's temporary files: this and the writer's process id.
+const std::string TEMPORARY_SUFFIX = ".tmp.";
+
 inline bool is_temporary_file_name(const std::string& name)
 {
-  const std::size_t at = name.rfind(".tmp.");
-  return at != std::string::npos && at + 5 < name.size() &&
-         name.find_first_not_of("0123456789", at + 5) == std::string::npos;
+  const std::size_t at = name.rfind(TEMPORARY_SUFFIX);
+  const std::size_t id = at + TEMPORARY_SUFFIX.size();
+  return at != std::string::npos && id < name.size() && name.find_first_not_of("0123456789", id) == std::string::npos;
 }
 
 // Writes `path` through a temporary file in the same folder and a rename, so that a reader
@@ -246,7 +251,7 @@ inline bool is_temporary_file_name(const std::string& name)
 inline void write_file_atomically(const std::string& path, const std::function<void(std::ofstream&)>& write,
                                   bool binary = false)
 {
-  const std::string temporary = path + ".tmp." + std::to_string(::getpid());
+  const std::string temporary = path + TEMPORARY_SUFFIX + std::to_string(::getpid());
   {
     std::ofstream out(temporary, binary ? std::ios::binary | std::ios::out : std::ios::out);
     if(!out)

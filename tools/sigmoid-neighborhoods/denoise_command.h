@@ -71,7 +71,7 @@ inline std::uint64_t parse_seed(const std::string& text)
 
 inline int run_denoise_experiment(int argc, char** argv)
 {
-  const Arguments args(argc, argv, 2,
+  const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT,
                        {"-o", "--output", "--noise", "--seed", "--data", "--fandisk", "--figure-model",
                         "--noisy-normals", "--threads"},
                        {"-h", "--help"});

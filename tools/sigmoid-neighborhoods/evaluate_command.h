@@ -119,7 +119,7 @@ public:
     char line[256];
     if(m_terminal)
     {
-      const int width = 30, filled = m_total ? int(width * m_done / m_total) : width;
+      const int width = BAR_WIDTH, filled = m_total ? int(width * m_done / m_total) : width;
       std::snprintf(line, sizeof(line), "\r[%-*s] %zu/%zu models, %.0f points/s, %s left   ",
                     width, std::string(std::size_t(filled), '#').c_str(), m_done, m_total, rate,
                     duration(left).c_str());
@@ -147,6 +147,9 @@ public:
   }
 
 private:
+  // Characters of the bar: with the counts after it, a line fits an 80-column terminal.
+  static constexpr int BAR_WIDTH = 30;
+
   std::size_t m_total, m_done = 0, m_points = 0;
   std::uintmax_t m_bytes, m_done_bytes = 0;
   bool m_terminal;
@@ -235,7 +238,7 @@ inline std::string host_name()
 
 inline int run_evaluate(int argc, char** argv)
 {
-  const Arguments args(argc, argv, 2,
+  const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT,
                        {"-o", "--output", "--repository", "--shard", "--threads", "--barycenter", "--k-min", "--k-max",
                         "--fixed-k", "--angle-tolerance"},
                        {"-h", "--help", "--resume", "--per-point", "--only-with-normals"});
@@ -363,7 +366,8 @@ inline int run_evaluate(int argc, char** argv)
 
 inline int run_merge(int argc, char** argv)
 {
-  const Arguments args(argc, argv, 2, {"-o", "--output", "--repository"}, {"-h", "--help"});
+  const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT, {"-o", "--output", "--repository"},
+                       {"-h", "--help"});
   if(print_help(args, MERGE_USAGE))
     return EXIT_OK;
   const std::string outdir = args.output();

@@ -87,8 +87,9 @@ inline void write_statistics(Json_writer& w, const SN::Evaluation_statistics& s)
   const auto km = s.k_mean_and_deviation();
   w.value("k_mean", km.first).value("k_standard_deviation", km.second);
   w.begin_object("table3");
-  w.value("a_zero", s.a_lowering[0]).value("a_lower_valid", s.a_lowering[1]).value("a_lower_fails", s.a_lowering[2]);
-  w.value("b_equals_a", s.b_lowering[0]).value("b_lower_valid", s.b_lowering[1]).value("b_lower_fails", s.b_lowering[2]);
+  w.value("a_zero", s.a_lowering[0]).value("a_lower_valid", s.a_lowering[1]);
+  w.value("a_lower_fails", s.a_lowering[2]).value("b_equals_a", s.b_lowering[0]);
+  w.value("b_lower_valid", s.b_lowering[1]).value("b_lower_fails", s.b_lowering[2]);
   w.end_object();
   w.array("pair_k_histogram", s.pair_k_histogram);
   w.end_object();

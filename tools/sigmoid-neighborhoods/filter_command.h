@@ -124,7 +124,7 @@ inline void write_filtered_ply(std::ostream& out, const SN::Oriented_point_set& 
 
 inline int run_filter_normals(int argc, char** argv)
 {
-  const Arguments args(argc, argv, 2,
+  const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT,
                        {"-o", "--output", "--iterations", "--cut-off", "--eigenvalue-threshold", "--damping", "--radius",
                         "--size-range", "--angle-tolerance", "--threads"},
                        {"-h", "--help", "--adaptive"});

@@ -61,7 +61,8 @@ inline Search_options read_search_options(const Arguments& args)
 // Without `estimate_normals`, a point set without normals comes back with no normals.
 inline SN::Oriented_point_set read_model(const std::string& path, unsigned int k_max, bool estimate_normals = true)
 {
-  SN::Oriented_point_set model = SN::read_oriented_point_set(path, estimate_normals ? SN::DEFAULT_ESTIMATION_NEIGHBORS : 0);
+  SN::Oriented_point_set model =
+    SN::read_oriented_point_set(path, estimate_normals ? SN::DEFAULT_ESTIMATION_NEIGHBORS : 0);
   if(model.points.size() < std::size_t(k_max) + 1)
     throw SN::Input_error("needs at least k_max + 1 = " + std::to_string(k_max + 1) + " distinct points, got " +
                           std::to_string(model.points.size()) +
@@ -199,7 +200,7 @@ inline void write_optimal_ply(std::ostream& out, const SN::Oriented_point_set& m
 
 inline int run_optimal(int argc, char** argv)
 {
-  const Arguments args(argc, argv, 2,
+  const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT,
                        {"-o", "--output", "--ply", "--k-min", "--k-max", "--barycenter", "--angle-tolerance", "--threads"},
                        {"-h", "--help"});
   if(print_help(args, OPTIMAL_USAGE))

@@ -178,7 +178,8 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
 
 inline int run_report(int argc, char** argv)
 {
-  const Arguments args(argc, argv, 2, {"-o", "--output", "--figure-model", "--threads"}, {"-h", "--help"});
+  const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT, {"-o", "--output", "--figure-model", "--threads"},
+                       {"-h", "--help"});
   if(print_help(args, REPORT_USAGE))
     return EXIT_OK;
   if(args.positional().empty())

@@ -90,10 +90,10 @@ inline Denoise_inputs load_denoise_inputs(const std::vector<std::string>& names,
       std::cerr << "denoise-experiment: " << l.settings.title << " skipped: " << absent << '\n';
       continue;
     }
+    const std::string paper_vertices =
+      l.settings.paper_vertices ? std::to_string(l.settings.paper_vertices) : std::string("–");
     inputs.sources.emplace_back(l.settings.title, source + " (" + std::to_string(l.mesh.number_of_vertices()) +
-                                                    " vertices; the paper's: " +
-                                                    (l.settings.paper_vertices ? std::to_string(l.settings.paper_vertices)
-                                                                               : std::string("–")) + ")");
+                                                    " vertices; the paper's: " + paper_vertices + ")");
     inputs.loaded.push_back(std::move(l));
   }
   return inputs;
