@@ -8,6 +8,9 @@
 
 #include <CGAL/Sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/property_map.h>
 #include <CGAL/Random.h>
@@ -692,4 +695,59 @@ TEST_CASE("Parallel_tag: an exception at one index reaches the caller as that ex
   CHECK(SN::internal::thread_count<SN::Parallel_if_available_tag>(3) ==
         (std::is_same<SN::Parallel_if_available_tag, CGAL::Parallel_tag>::value ? 3u : 1u));
   CHECK(SN::internal::thread_count<CGAL::Sequential_tag>(3) == 1u);
+}
+
+TEST_CASE("meshes: any FaceListGraph, Polyhedron_3 as Surface_mesh", "[mesh]")
+{
+  typedef CGAL::Polyhedron_3<Kernel> Polyhedron;
+  typedef boost::graph_traits<Polyhedron>::vertex_descriptor Polyhedron_vertex;
+  Mesh cube = make_grid_cube(3, 1.);
+  // a separate triangle whose corners repeat three cube vertices: merged
+  cube.add_face(cube.add_vertex(Point_3(0, 0, 0)), cube.add_vertex(Point_3(1, 0, 0)), cube.add_vertex(Point_3(0, 1, 0)));
+  Polyhedron polyhedron;
+  std::map<Mesh::Vertex_index, Polyhedron_vertex> copy_of;
+  CGAL::copy_face_graph(cube, polyhedron,
+                        CGAL::parameters::vertex_to_vertex_output_iterator(std::inserter(copy_of, copy_of.end())));
+  REQUIRE(num_vertices(polyhedron) == cube.number_of_vertices());
+  // the Surface_mesh's indices, so that the same vertex of each duplicate group is kept
+  std::map<Polyhedron_vertex, std::size_t> index_of;
+  for(auto v : cube.vertices())
+    index_of[copy_of[v]] = std::size_t(v);
+  const auto indices = CGAL::parameters::vertex_index_map(boost::make_assoc_property_map(index_of));
+
+  auto records = cube.add_property_map<Mesh::Vertex_index, SN::Optimal_sigmoid_neighborhood>("v:optimal").first;
+  std::map<Polyhedron_vertex, SN::Optimal_sigmoid_neighborhood> polyhedron_records;
+  const auto summary = SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(cube, records);
+  const auto polyhedron_summary = SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(
+    polyhedron, boost::make_assoc_property_map(polyhedron_records), indices);
+  CHECK(summary.vertices == polyhedron_summary.vertices);
+  CHECK(summary.points == polyhedron_summary.points);
+  CHECK(summary.merged_duplicates == 3);
+  CHECK(polyhedron_summary.merged_duplicates == 3);
+  for(auto v : cube.vertices())
+    CHECK(same_record(records[v], polyhedron_records[copy_of[v]]));
+
+  auto features = cube.add_property_map<Mesh::Vertex_index, SN::Dimensionality_features>("v:features").first;
+  std::map<Polyhedron_vertex, SN::Dimensionality_features> polyhedron_features;
+  SN::compute_sigmoid_features<CGAL::Sequential_tag>(cube, SN::Cosine_sigmoid(0., pi / 3), 10, features);
+  SN::compute_sigmoid_features<CGAL::Sequential_tag>(polyhedron, SN::Cosine_sigmoid(0., pi / 3), 10,
+                                                     boost::make_assoc_property_map(polyhedron_features), indices);
+  for(auto v : cube.vertices())
+    CHECK(std::memcmp(&features[v].error, &polyhedron_features[copy_of[v]].error, sizeof(double)) == 0);
+
+  // positions through vertex_point_map: the cube scaled by 2 has the same optimal triples, errors
+  // within rounding
+  std::map<Polyhedron_vertex, Point_3> scaled;
+  for(auto v : vertices(polyhedron))
+    scaled[v] = CGAL::ORIGIN + 2. * (v->point() - CGAL::ORIGIN);
+  std::map<Polyhedron_vertex, SN::Optimal_sigmoid_neighborhood> scaled_records;
+  SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(
+    polyhedron, boost::make_assoc_property_map(scaled_records),
+    indices.vertex_point_map(boost::make_assoc_property_map(scaled)));
+  for(auto v : cube.vertices())
+  {
+    const auto& r = scaled_records[copy_of[v]];
+    CHECK(r.k == records[v].k);
+    CHECK(r.error() == Approx(records[v].error()).margin(1e-12));
+  }
 }

@@ -13,7 +13,6 @@
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Surface_mesh.h>
 
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
@@ -104,7 +103,12 @@ namespace Sigmoid_neighborhoods {
 */
 template <typename ConcurrencyTag, typename PointRange, typename OutputIterator,
           typename CGAL_NP_TEMPLATE_PARAMETERS>
-OutputIterator compute_optimal_sigmoid_neighborhoods(const PointRange& points, OutputIterator output,
+#ifdef DOXYGEN_RUNNING
+OutputIterator
+#else
+std::enable_if_t<internal::is_range<PointRange>::value, OutputIterator>
+#endif
+compute_optimal_sigmoid_neighborhoods(const PointRange& points, OutputIterator output,
                                                      const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
@@ -120,25 +124,38 @@ OutputIterator compute_optimal_sigmoid_neighborhoods(const PointRange& points, O
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
-  \brief the same search on the vertices of a `Surface_mesh` (SPEC §1): vertex normals from
+  \brief the same search on the vertices of a mesh, a `Surface_mesh`, a `Polyhedron_3` or any `FaceListGraph` (SPEC §1): vertex normals from
   `Polygon_mesh_processing::compute_vertex_normals()` unless `vertex_normal_map` is given,
   vertices at one position merged (the smallest index kept, its copies get its record),
   vertices without a face or with an undefined normal left out (they get a failure record).
 
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
           `CGAL::Sigmoid_neighborhoods::Parallel_if_available_tag`
-  \tparam Point the point type of the mesh, a `Point_3` of a CGAL kernel
+  \tparam PolygonMesh a model of `FaceListGraph` (`CGAL::Surface_mesh`, `CGAL::Polyhedron_3` ...)
   \tparam VertexRecordMap a model of `WritablePropertyMap` with the mesh's vertex descriptor as key
           type and `Optimal_sigmoid_neighborhood` as value type
   \tparam NamedParameters a sequence of named parameters
 
-  \param mesh the input mesh; vertex positions are read from `mesh.points()`
+  \param mesh the input mesh; vertex positions are read from `vertex_point_map`
   \param vertex_records receives the record of every vertex
   \param np an optional sequence of named parameters among the ones listed below: CGAL's
     (`CGAL::parameters`) and the package's (`CGAL::Sigmoid_neighborhoods::parameters`, which come
     first in a chain, see \ref Sigmoid_neighborhoods_named_parameters)
 
   \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDescription{a property map associating points to the vertices of `mesh`}
+      \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as key type and
+        a `Point_3` of a CGAL kernel as value type}
+      \cgalParamDefault{`boost::get(CGAL::vertex_point, mesh)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_index_map}
+      \cgalParamDescription{a property map associating to each vertex of `mesh` a unique index}
+      \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as key type and
+        `std::size_t` as value type}
+      \cgalParamDefault{an automatically indexed internal map}
+      \cgalParamExtra{vertices at one position are merged into the one of smallest index}
+    \cgalParamNEnd
     \cgalParamNBegin{vertex_normal_map}
       \cgalParamDescription{a property map associating oriented normals to the vertices of `mesh`}
       \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as key type and
@@ -187,10 +204,15 @@ OutputIterator compute_optimal_sigmoid_neighborhoods(const PointRange& points, O
   (otherwise `std::invalid_argument`)
   \return how vertices became points
 */
-template <typename ConcurrencyTag, typename Point, typename VertexRecordMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
-Mesh_points_summary compute_optimal_sigmoid_neighborhoods(const CGAL::Surface_mesh<Point>& mesh,
-                                                          VertexRecordMap vertex_records,
-                                                          const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+template <typename ConcurrencyTag, typename PolygonMesh, typename VertexRecordMap,
+          typename CGAL_NP_TEMPLATE_PARAMETERS>
+#ifdef DOXYGEN_RUNNING
+Mesh_points_summary
+#else
+std::enable_if_t<!internal::is_range<PolygonMesh>::value, Mesh_points_summary>
+#endif
+compute_optimal_sigmoid_neighborhoods(const PolygonMesh& mesh, VertexRecordMap vertex_records,
+                                      const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   const auto mesh_points = internal::mesh_points(mesh, np);
   std::vector<Optimal_sigmoid_neighborhood> records(mesh_points.input.size());
@@ -198,9 +220,10 @@ Mesh_points_summary compute_optimal_sigmoid_neighborhoods(const CGAL::Surface_me
   internal::optimal_search_all<ConcurrencyTag>(
     mesh_points.input, query, internal::search_settings(np),
     [&records](std::size_t i, const Optimal_sigmoid_neighborhood& r) { records[i] = r; });
-  for(auto v : mesh.vertices())
+  std::size_t t = 0;
+  for(auto v : vertices(mesh))
   {
-    const std::uint32_t i = mesh_points.point_of_vertex[std::size_t(v)];
+    const std::uint32_t i = mesh_points.point_in_vertex_order[t++];
     put(vertex_records, v, i == internal::NO_POINT ? Optimal_sigmoid_neighborhood() : records[i]);
   }
   return mesh_points.summary;

@@ -17,7 +17,6 @@
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <vector>
 
@@ -105,7 +104,12 @@ std::vector<Dimensionality_features> features_all(const Oriented_points& input, 
 */
 template <typename ConcurrencyTag, typename PointRange, typename OutputIterator,
           typename CGAL_NP_TEMPLATE_PARAMETERS>
-OutputIterator compute_sigmoid_features(const PointRange& points, const Cosine_sigmoid& sigmoid, unsigned int k,
+#ifdef DOXYGEN_RUNNING
+OutputIterator
+#else
+std::enable_if_t<internal::is_range<PointRange>::value, OutputIterator>
+#endif
+compute_sigmoid_features(const PointRange& points, const Cosine_sigmoid& sigmoid, unsigned int k,
                                         OutputIterator output,
                                         const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
@@ -125,7 +129,7 @@ OutputIterator compute_sigmoid_features(const PointRange& points, const Cosine_s
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
-  \brief computes the same features on the vertices of a `CGAL::Surface_mesh`, with the vertex
+  \brief computes the same features on the vertices of a mesh (any `FaceListGraph`), with the vertex
   handling of `compute_optimal_sigmoid_neighborhoods()`: vertex normals from
   `CGAL::Polygon_mesh_processing::compute_vertex_normals()` unless `vertex_normal_map` is given,
   vertices at one position merged (the smallest index is computed, its copies get its record),
@@ -133,12 +137,12 @@ OutputIterator compute_sigmoid_features(const PointRange& points, const Cosine_s
 
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
           `CGAL::Sigmoid_neighborhoods::Parallel_if_available_tag`
-  \tparam Point the point type of the mesh, a `Point_3` of a CGAL kernel
+  \tparam PolygonMesh a model of `FaceListGraph` (`CGAL::Surface_mesh`, `CGAL::Polyhedron_3` ...)
   \tparam VertexFeatureMap a model of `WritablePropertyMap` with the mesh's vertex descriptor as
           key type and `Dimensionality_features` as value type
   \tparam NamedParameters a sequence of named parameters
 
-  \param mesh the input mesh; vertex positions are read from `mesh.points()`
+  \param mesh the input mesh; vertex positions are read from `vertex_point_map`
   \param sigmoid the weights `sig_{a,b}`
   \param k the number of neighbors of each point
   \param vertex_features receives the record of every vertex
@@ -147,6 +151,19 @@ OutputIterator compute_sigmoid_features(const PointRange& points, const Cosine_s
     first in a chain, see \ref Sigmoid_neighborhoods_named_parameters)
 
   \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDescription{a property map associating points to the vertices of `mesh`}
+      \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as key type and
+        a `Point_3` of a CGAL kernel as value type}
+      \cgalParamDefault{`boost::get(CGAL::vertex_point, mesh)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_index_map}
+      \cgalParamDescription{a property map associating to each vertex of `mesh` a unique index}
+      \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as key type and
+        `std::size_t` as value type}
+      \cgalParamDefault{an automatically indexed internal map}
+      \cgalParamExtra{vertices at one position are merged into the one of smallest index}
+    \cgalParamNEnd
     \cgalParamNBegin{vertex_normal_map}
       \cgalParamDescription{a property map associating oriented normals to the vertices of `mesh`}
       \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as key type and
@@ -165,8 +182,14 @@ OutputIterator compute_sigmoid_features(const PointRange& points, const Cosine_s
        (otherwise `std::invalid_argument`)
   \return how the vertices became points
 */
-template <typename ConcurrencyTag, typename Point, typename VertexFeatureMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
-Mesh_points_summary compute_sigmoid_features(const CGAL::Surface_mesh<Point>& mesh, const Cosine_sigmoid& sigmoid,
+template <typename ConcurrencyTag, typename PolygonMesh, typename VertexFeatureMap,
+          typename CGAL_NP_TEMPLATE_PARAMETERS>
+#ifdef DOXYGEN_RUNNING
+Mesh_points_summary
+#else
+std::enable_if_t<!internal::is_range<PolygonMesh>::value, Mesh_points_summary>
+#endif
+compute_sigmoid_features(const PolygonMesh& mesh, const Cosine_sigmoid& sigmoid,
                                              unsigned int k, VertexFeatureMap vertex_features,
                                              const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
@@ -177,9 +200,10 @@ Mesh_points_summary compute_sigmoid_features(const CGAL::Surface_mesh<Point>& me
   const internal::Neighbor_query query(mesh_points.input.points);
   const auto features = internal::features_all<ConcurrencyTag>(mesh_points.input, query, sigmoid, k, barycenter,
                                                                internal::number_of_threads(np));
-  for(auto v : mesh.vertices())
+  std::size_t t = 0;
+  for(auto v : vertices(mesh))
   {
-    const std::uint32_t i = mesh_points.point_of_vertex[std::size_t(v)];
+    const std::uint32_t i = mesh_points.point_in_vertex_order[t++];
     put(vertex_features, v, i == internal::NO_POINT ? Dimensionality_features() : features[i]);
   }
   return mesh_points.summary;

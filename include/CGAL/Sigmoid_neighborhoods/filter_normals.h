@@ -18,7 +18,6 @@
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
@@ -433,7 +432,12 @@ Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_
   \return what was done
 */
 template <typename ConcurrencyTag, typename PointRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
-Normal_filter_summary filter_normals(PointRange& points, const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+#ifdef DOXYGEN_RUNNING
+Normal_filter_summary
+#else
+std::enable_if_t<internal::is_range<PointRange>::value, Normal_filter_summary>
+#endif
+filter_normals(PointRange& points, const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
   static_assert(NP_helper::has_normal_map(), "filter_normals() needs a normal map");
@@ -470,22 +474,35 @@ Normal_filter_summary filter_normals(PointRange& points, const CGAL_NP_CLASS& np
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsNormalFilter
-  \brief the same filter on the vertices of a `Surface_mesh` (SPEC §1): input normals from
+  \brief the same filter on the vertices of a mesh, a `Surface_mesh`, a `Polyhedron_3` or any `FaceListGraph` (SPEC §1): input normals from
   `vertex_normal_map` or else `Polygon_mesh_processing::compute_vertex_normals()`, vertices at one
   position merged (the smallest index kept; its copies get its normal), vertices without a face or
   with an undefined normal left out (they get the zero vector).
 
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag` (OpenMP)
-  \tparam Point the point type of the mesh, a `Point_3` of a CGAL kernel
+  \tparam PolygonMesh a model of `FaceListGraph` (`CGAL::Surface_mesh`, `CGAL::Polyhedron_3` ...)
   \tparam VertexNormalMap a `WritablePropertyMap` from vertex descriptors to `Vector_3`
   \tparam NamedParameters a sequence of named parameters
-  \param mesh the input mesh; vertex positions are read from `mesh.points()`
+  \param mesh the input mesh; vertex positions are read from `vertex_point_map`
   \param filtered_normals receives the filtered normal of every vertex (it may be the input map)
   \param np an optional sequence of named parameters among the ones listed below: CGAL's
     (`CGAL::parameters`) and the package's (`CGAL::Sigmoid_neighborhoods::parameters`, which come
     first in a chain, see \ref Sigmoid_neighborhoods_named_parameters)
 
   \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDescription{a property map associating points to the vertices of `mesh`}
+      \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as key type and
+        a `Point_3` of a CGAL kernel as value type}
+      \cgalParamDefault{`boost::get(CGAL::vertex_point, mesh)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_index_map}
+      \cgalParamDescription{a property map associating to each vertex of `mesh` a unique index}
+      \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as key type and
+        `std::size_t` as value type}
+      \cgalParamDefault{an automatically indexed internal map}
+      \cgalParamExtra{vertices at one position are merged into the one of smallest index}
+    \cgalParamNEnd
     \cgalParamNBegin{vertex_normal_map}
       \cgalParamDescription{a property map associating the input normals to the vertices of `mesh`}
       \cgalParamType{a model of `ReadablePropertyMap` with the mesh's vertex descriptor as key type and
@@ -566,9 +583,14 @@ Normal_filter_summary filter_normals(PointRange& points, const CGAL_NP_CLASS& np
   `std::invalid_argument`
   \return what was done, with `Normal_filter_summary::mesh` set
 */
-template <typename ConcurrencyTag, typename Point, typename VertexNormalMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
-Normal_filter_summary filter_normals(const CGAL::Surface_mesh<Point>& mesh, VertexNormalMap filtered_normals,
-                                     const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+template <typename ConcurrencyTag, typename PolygonMesh, typename VertexNormalMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+#ifdef DOXYGEN_RUNNING
+Normal_filter_summary
+#else
+std::enable_if_t<!internal::is_range<PolygonMesh>::value, Normal_filter_summary>
+#endif
+filter_normals(const PolygonMesh& mesh, VertexNormalMap filtered_normals,
+               const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::get_parameter_reference;
   using CGAL::parameters::is_default_parameter;
@@ -614,9 +636,10 @@ Normal_filter_summary filter_normals(const CGAL::Surface_mesh<Point>& mesh, Vert
     summary = internal::filter_normals_all<ConcurrencyTag>(mesh_points.input, nullptr, settings);
   summary.mesh = mesh_points.summary;
   typedef typename boost::property_traits<VertexNormalMap>::value_type Vector;
-  for(auto vertex : mesh.vertices())
+  std::size_t t = 0;
+  for(auto vertex : vertices(mesh))
   {
-    const std::uint32_t i = mesh_points.point_of_vertex[std::size_t(vertex)];
+    const std::uint32_t i = mesh_points.point_in_vertex_order[t++];
     if(i == internal::NO_POINT)
       put(filtered_normals, vertex, Vector(0., 0., 0.));
     else

@@ -97,7 +97,9 @@ public:
       m_tree(boost::counting_iterator<std::uint32_t>(0),
              boost::counting_iterator<std::uint32_t>(std::uint32_t(points.size())), Splitter(), m_traits)
   {
-    m_tree.build(); // before any parallel query: queries on a built tree are read-only
+    // before any parallel query: queries on a built tree are read-only (CGAL's build() needs a point)
+    if(!points.empty())
+      m_tree.build();
   }
 
   // The caller's rows (checked by neighbor_lists()) instead of the tree: no tree is built.

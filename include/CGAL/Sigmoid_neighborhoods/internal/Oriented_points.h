@@ -18,6 +18,8 @@
 #include <iterator>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -67,6 +69,16 @@ bool unit_normal(const Vector& n, Eigen::Vector3d& normal)
     normal /= std::sqrt(squared_norm);
   return true;
 }
+
+// True for a point range (std::begin() and std::end() apply), false for a mesh (a FaceListGraph such
+// as Surface_mesh or Polyhedron_3): what tells the overloads of every algorithm apart.
+template <typename T, typename = void>
+struct is_range : std::false_type
+{};
+template <typename T>
+struct is_range<T, std::void_t<decltype(std::begin(std::declval<const T&>())), decltype(std::end(std::declval<const T&>()))>>
+  : std::true_type
+{};
 
 // Copies a point range through its maps, rejecting what the paper's features are undefined for.
 template <typename PointRange, typename PointMap, typename NormalMap>

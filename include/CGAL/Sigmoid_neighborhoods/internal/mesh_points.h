@@ -9,7 +9,11 @@
 #include <CGAL/Sigmoid_neighborhoods/Mesh_points_summary.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Oriented_points.h>
 
-#include <CGAL/Surface_mesh.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/merge_equal_positions.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/properties.h>
+#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -27,95 +31,102 @@ namespace internal {
 
 constexpr std::uint32_t NO_POINT = (std::numeric_limits<std::uint32_t>::max)();
 
-template <typename Point>
 struct Mesh_points
 {
   Oriented_points input;
-  // For every vertex index: the index of its point in `input`, or NO_POINT when dropped.
+  // For every vertex index (the mesh's vertex index map): the index of its point in `input`, or
+  // NO_POINT when dropped.
   std::vector<std::uint32_t> point_of_vertex;
+  // The same for every vertex in the order of vertices(mesh): what the overloads write back.
+  std::vector<std::uint32_t> point_in_vertex_order;
   Mesh_points_summary summary;
 };
 
-// Vertex normals come from `vertex_normal_map` when given, else from
-// `Polygon_mesh_processing::compute_vertex_normals()`.
-template <typename Point, typename NamedParameters>
-Mesh_points<Point> mesh_points(const CGAL::Surface_mesh<Point>& mesh, const NamedParameters& np)
+// A vertex without an incident halfedge has no face (CGAL's is_isolated()).
+template <typename PolygonMesh>
+bool is_isolated_vertex(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v, const PolygonMesh& mesh)
 {
-  typedef CGAL::Surface_mesh<Point> Mesh;
-  typedef typename Mesh::Vertex_index Vertex_index;
-  typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector_3;
+  return halfedge(v, mesh) == boost::graph_traits<PolygonMesh>::null_halfedge();
+}
+
+// The vertices of any FaceListGraph as the points of the computation (SPEC §1), positions from
+// `vertex_point_map`, normals from `vertex_normal_map` when given, else from
+// `Polygon_mesh_processing::compute_vertex_normals()`.
+template <typename PolygonMesh, typename NamedParameters>
+Mesh_points mesh_points(const PolygonMesh& mesh, const NamedParameters& np)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor Vertex;
+  typedef typename CGAL::GetGeomTraits<PolygonMesh, NamedParameters>::type Geom_traits;
+  typedef typename Geom_traits::Vector_3 Vector_3;
+  using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
 
-  Mesh_points<Point> result;
-  result.point_of_vertex.assign(mesh.number_of_vertices() + mesh.number_of_removed_vertices(), NO_POINT);
-  result.summary.vertices = mesh.number_of_vertices();
+  const auto point_map =
+    choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, mesh));
+  const auto index_map = CGAL::get_initialized_vertex_index_map(mesh, np);
+  Mesh_points result;
+  std::size_t slots = 0;
+  for(Vertex v : vertices(mesh))
+  {
+    slots = (std::max)(slots, std::size_t(get(index_map, v)) + 1);
+    ++result.summary.vertices;
+  }
+  result.point_of_vertex.assign(slots, NO_POINT);
 
   auto normals = get(CGAL::dynamic_vertex_property_t<Vector_3>(), mesh);
   if constexpr(!is_default_parameter<NamedParameters, CGAL::internal_np::vertex_normal_map_t>::value)
   {
     const auto given = get_parameter(np, CGAL::internal_np::vertex_normal_map);
-    for(Vertex_index v : mesh.vertices())
+    for(Vertex v : vertices(mesh))
       put(normals, v, get(given, v));
   }
   else
-    CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, normals);
+    CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, normals, np);
 
-  std::vector<Vertex_index> candidates;
-  for(Vertex_index v : mesh.vertices())
+  // The vertices with a face and a defined normal, in index order, and their positions.
+  std::vector<std::pair<std::size_t, Vertex>> candidates;
+  for(Vertex v : vertices(mesh))
   {
-    if(mesh.is_isolated(v))
+    if(is_isolated_vertex(v, mesh))
     {
       ++result.summary.isolated_vertices;
       continue;
     }
-    checked_point(mesh.point(v), "vertex", std::size_t(v));
+    const std::size_t index = std::size_t(get(index_map, v));
+    checked_point(get(point_map, v), "vertex", index);
     Eigen::Vector3d normal;
     if(!unit_normal(get(normals, v), normal))
     {
       ++result.summary.undefined_normals;
       continue;
     }
-    candidates.push_back(v);
+    candidates.emplace_back(index, v);
   }
+  std::sort(candidates.begin(), candidates.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<Double_point> positions;
+  positions.reserve(candidates.size());
+  for(const auto& c : candidates)
+    positions.push_back(checked_point(get(point_map, c.second), "vertex", c.first));
 
-  // Equal positions become adjacent after a stable sort by coordinates; the first in index
-  // order represents them all.
-  std::vector<Vertex_index> sorted = candidates;
-  auto position_less = [&mesh](Vertex_index x, Vertex_index y) {
-    const Point &p = mesh.point(x), &q = mesh.point(y);
-    if(p.x() != q.x()) return p.x() < q.x();
-    if(p.y() != q.y()) return p.y() < q.y();
-    return p.z() < q.z();
-  };
-  std::stable_sort(sorted.begin(), sorted.end(), position_less);
-  std::vector<Vertex_index> representative(result.point_of_vertex.size());
-  for(std::size_t s = 0; s < sorted.size();)
+  // Vertices at one position become the first of them in index order.
+  const Merged_positions merged = merge_equal_positions(positions);
+  result.summary.merged_duplicates = merged.merged;
+  result.input.points.reserve(merged.first.size());
+  result.input.normals.reserve(merged.first.size());
+  for(std::size_t first : merged.first)
   {
-    std::size_t e = s + 1;
-    while(e < sorted.size() && mesh.point(sorted[e]) == mesh.point(sorted[s]))
-      ++e;
-    for(std::size_t t = s; t < e; ++t)
-      representative[std::size_t(sorted[t])] = sorted[s];
-    s = e;
-  }
-
-  for(Vertex_index v : candidates)
-  {
-    const Vertex_index r = representative[std::size_t(v)];
-    if(r != v)
-    {
-      ++result.summary.merged_duplicates;
-      continue;
-    }
     Eigen::Vector3d normal;
-    unit_normal(get(normals, v), normal);
-    result.point_of_vertex[std::size_t(v)] = std::uint32_t(result.input.points.size());
-    result.input.points.push_back(checked_point(mesh.point(v), "vertex", std::size_t(v)));
+    unit_normal(get(normals, candidates[first].second), normal);
+    result.input.points.push_back(positions[first]);
     result.input.normals.push_back(normal);
   }
-  for(Vertex_index v : candidates)
-    result.point_of_vertex[std::size_t(v)] = result.point_of_vertex[std::size_t(representative[std::size_t(v)])];
+  for(std::size_t c = 0; c < candidates.size(); ++c)
+    result.point_of_vertex[candidates[c].first] = std::uint32_t(merged.position_of[c]);
+  result.point_in_vertex_order.reserve(result.summary.vertices);
+  for(Vertex v : vertices(mesh))
+    result.point_in_vertex_order.push_back(result.point_of_vertex[std::size_t(get(index_map, v))]);
   result.summary.points = result.input.points.size();
   return result;
 }

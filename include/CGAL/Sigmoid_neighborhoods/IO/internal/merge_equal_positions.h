@@ -7,48 +7,15 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_MERGE_EQUAL_POSITIONS_H
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/merge_equal_positions.h>
 
-#include <array>
 #include <cstddef>
-#include <map>
 #include <vector>
 
 /// \cond SKIP_IN_MANUAL
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 namespace internal {
-
-// Points at one position become the first of them (SPEC §1).
-struct Merged_positions
-{
-  static constexpr std::size_t LEFT_OUT = std::size_t(-1);
-  std::vector<std::size_t> first;       // per distinct position, in input order: its first point
-  std::vector<std::size_t> position_of; // per point: the index of its position in `first`, or LEFT_OUT
-  std::size_t merged = 0;               // points merged into an earlier one
-};
-
-// The distinct positions of the points `i` with `included[i]` (all points when `included` is empty).
-// Positions are equal when their coordinates are (so 0 and -0 are one position).
-template <typename Point>
-Merged_positions merge_equal_positions(const std::vector<Point>& points, const std::vector<bool>& included = {})
-{
-  Merged_positions result;
-  result.position_of.assign(points.size(), Merged_positions::LEFT_OUT);
-  std::map<std::array<double, 3>, std::size_t> position_at;
-  for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    if(!included.empty() && !included[i])
-      continue;
-    const auto inserted =
-      position_at.emplace(std::array<double, 3>{{points[i].x(), points[i].y(), points[i].z()}}, result.first.size());
-    if(inserted.second)
-      result.first.push_back(i);
-    else
-      ++result.merged;
-    result.position_of[i] = inserted.first->second;
-  }
-  return result;
-}
 
 // A point set read with or without normals: duplicates merged into the first, with its normal.
 inline void merge_duplicate_points(Oriented_point_set& out, bool has_normals)
