@@ -751,3 +751,49 @@ TEST_CASE("meshes: any FaceListGraph, Polyhedron_3 as Surface_mesh", "[mesh]")
     CHECK(r.error() == Approx(records[v].error()).margin(1e-12));
   }
 }
+
+TEST_CASE("compute_k_nearest_neighbors: SPEC §2's rows, shared by several calls", "[neighborhoods]")
+{
+  // a grid: many ties at equal distances, decided by index
+  Point_list grid;
+  for(int x = 0; x < 6; ++x)
+    for(int y = 0; y < 6; ++y)
+      grid.emplace_back(Point_3(x, y, 0.1 * ((x * y) % 3)), Vector_3(0, 0, 1));
+  std::vector<std::uint32_t> expected_indices, indices;
+  std::vector<std::size_t> expected_offsets, offsets;
+  brute_force_rows(grid, 20, expected_indices, expected_offsets);
+  SN::compute_k_nearest_neighbors<SN::Parallel_if_available_tag>(grid, 20, indices, offsets,
+                                                                  CGAL::parameters::point_map(Point_map()));
+  CHECK(indices == expected_indices);
+  CHECK(offsets == expected_offsets);
+  // more neighbors than there are other points: every other point
+  SN::compute_k_nearest_neighbors<CGAL::Sequential_tag>(grid, 100, indices, offsets,
+                                                        CGAL::parameters::point_map(Point_map()));
+  CHECK(offsets.back() == grid.size() * (grid.size() - 1));
+  CHECK_THROWS_AS(SN::compute_k_nearest_neighbors<CGAL::Sequential_tag>(grid, 0, indices, offsets,
+                                                                        CGAL::parameters::point_map(Point_map())),
+                  std::invalid_argument);
+
+  // one computation, three algorithms: the results without the rows, bit for bit
+  const Point_list points = folded_sheet(14, 9);
+  SN::compute_k_nearest_neighbors<SN::Parallel_if_available_tag>(points, 20, indices, offsets,
+                                                                  CGAL::parameters::point_map(Point_map()));
+  const auto rows = SNP::neighbor_indices(std::cref(indices), SNP::neighbor_offsets(std::cref(offsets), maps()));
+  std::vector<SN::Optimal_sigmoid_neighborhood> with_rows;
+  SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(points, std::back_inserter(with_rows), rows);
+  const auto without_rows = optimal(points);
+  REQUIRE(with_rows.size() == without_rows.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    CHECK(same_record(with_rows[i], without_rows[i]));
+  std::vector<SN::Point_evaluation> evaluated_with, evaluated_without;
+  SN::evaluate_sigmoid_neighborhoods<CGAL::Sequential_tag>(points, std::back_inserter(evaluated_with), rows);
+  SN::evaluate_sigmoid_neighborhoods<CGAL::Sequential_tag>(points, std::back_inserter(evaluated_without), maps());
+  REQUIRE(evaluated_with.size() == evaluated_without.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    CHECK(same_record(evaluated_with[i].optimal, evaluated_without[i].optimal));
+    CHECK(std::memcmp(&evaluated_with[i].error_cut_off, &evaluated_without[i].error_cut_off, sizeof(double)) == 0);
+    CHECK(evaluated_with[i].k_cut_off == evaluated_without[i].k_cut_off);
+    CHECK(std::memcmp(&evaluated_with[i].error_fixed_k, &evaluated_without[i].error_fixed_k, sizeof(double)) == 0);
+  }
+}
