@@ -11,7 +11,7 @@ RESULTS_DIR ?= results
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 DEBIAN_PACKAGES = g++ make cmake ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev \
-                  libgmp-dev libmpfr-dev catch2 python3-matplotlib python3-numpy doxygen parallel
+                  libgmp-dev libmpfr-dev libtbb-dev catch2 python3-matplotlib python3-numpy doxygen parallel
 CGAL_DATA_ARCHIVE = /usr/share/doc/libcgal-dev/data.tar.gz
 CORPUS_DIR = $(BUILD_DIR)/cgal-data
 TOOL = $(BUILD_DIR)/tools/sigmoid-neighborhoods/sigmoid-neighborhoods

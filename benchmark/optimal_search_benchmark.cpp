@@ -26,6 +26,9 @@
 #include <CGAL/property_map.h>
 
 #include <boost/iterator/function_output_iterator.hpp>
+#include <boost/range/iterator_range.hpp>
+
+#include <Eigen/Core>
 
 #include <malloc.h>
 #include <sys/resource.h>
@@ -52,7 +55,6 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point_3;
 typedef Kernel::Vector_3 Vector_3;
 namespace SN = CGAL::Sigmoid_neighborhoods;
-namespace SNI = CGAL::Sigmoid_neighborhoods::internal;
 
 struct Data
 {
@@ -150,32 +152,60 @@ Data scan(const std::string& file)
   return Data{std::filesystem::path(file).filename().string(), s.points, s.normals};
 }
 
-// The plain loop of SPEC §5: every triple, one covariance and one eigen solve each.
-std::vector<SN::Optimal_sigmoid_neighborhood> plain_loop(const SNI::Oriented_points& input, unsigned int threads)
+// The plain loop of SPEC §5 on the package's public building blocks: the neighborhoods of
+// compute_k_nearest_neighbors(), the weights of Cosine_sigmoid, and for every triple one
+// weighted_covariance() and one dimensionality_features() (an iterative eigen solve).
+std::vector<SN::Optimal_sigmoid_neighborhood> plain_loop(const Data& data, unsigned int threads)
 {
-  SNI::Search_settings s = SNI::search_settings(CGAL::parameters::default_values());
-  const auto sigmoids = s.sigmoids();
-  const SNI::Neighbor_query query(input.points);
-  std::vector<SN::Optimal_sigmoid_neighborhood> result(input.size());
-  struct Scratch
+  const std::size_t n = data.points.size();
+  const unsigned int k_min = SN::DEFAULT_K_MIN, k_max = SN::DEFAULT_K_MAX;
+  std::vector<SN::Cosine_sigmoid> sigmoids; // a ascending, then b ascending (SPEC §5)
+  for(double a : SN::default_angle_grid())
+    for(double b : SN::default_angle_grid())
+      if(a <= b)
+        sigmoids.emplace_back(a, b);
+  std::vector<std::uint32_t> rows;
+  std::vector<std::size_t> offsets;
+  SN::compute_k_nearest_neighbors<CGAL::Parallel_tag>(data.points, k_max, rows, offsets,
+                                                      SN::parameters::number_of_threads(threads));
+  // unit normals as SPEC §1 makes them: normals unit to 1e-12 are kept as given
+  std::vector<Eigen::Vector3d> normals;
+  for(const Vector_3& v : data.normals)
   {
-    std::vector<SNI::Neighbor> neighbors;
-    SNI::Local_neighborhood local;
-    std::vector<double> w;
-  };
-  SNI::for_each_index<CGAL::Parallel_tag>(
-    input.size(), threads, [] { return Scratch(); },
-    [&](std::size_t i, Scratch& sc) {
-      query.query(std::uint32_t(i), s.k_max, sc.neighbors);
-      sc.local.assign(input, std::uint32_t(i), sc.neighbors);
-      sc.w.resize(sc.local.size());
-      SN::Optimal_sigmoid_neighborhood& r = result[i];
+    Eigen::Vector3d m(v.x(), v.y(), v.z());
+    if(std::abs(m.squaredNorm() - 1.) > 1e-12)
+      m /= std::sqrt(m.squaredNorm());
+    normals.push_back(m);
+  }
+  std::vector<SN::Optimal_sigmoid_neighborhood> result(n);
+  const std::int64_t count = std::int64_t(n);
+#pragma omp parallel num_threads(int(threads))
+  {
+    std::vector<Point_3> neighborhood;
+    std::vector<double> angles, w;
+#pragma omp for schedule(dynamic, 16)
+    for(std::int64_t i = 0; i < count; ++i)
+    {
+      neighborhood.assign(1, data.points[std::size_t(i)]);
+      angles.assign(1, 0.);
+      for(std::size_t e = offsets[std::size_t(i)]; e < offsets[std::size_t(i) + 1]; ++e)
+      {
+        neighborhood.push_back(data.points[rows[e]]);
+        angles.push_back(SN::normal_angle(normals[std::size_t(i)], normals[rows[e]]));
+      }
+      w.resize(angles.size());
+      SN::Optimal_sigmoid_neighborhood& r = result[std::size_t(i)];
       for(const SN::Cosine_sigmoid& sigmoid : sigmoids)
       {
-        sc.local.weights(sigmoid, sc.w.data());
-        for(unsigned k = s.k_min; k <= s.k_max; ++k)
+        for(std::size_t j = 0; j < angles.size(); ++j)
+          w[j] = sigmoid(angles[j]);
+        for(unsigned int k = k_min; k <= k_max; ++k)
         {
-          const double e = sc.local.features(sc.w.data(), k, s.barycenter).error;
+          const double e = SN::dimensionality_features(
+                             SN::weighted_covariance(boost::make_iterator_range(neighborhood.begin(),
+                                                                                neighborhood.begin() + k + 1),
+                                                     boost::make_iterator_range(w.begin(), w.begin() + k + 1)))
+                             .error;
           if(e < r.error() - SN::TIE_TOLERANCE)
           {
             r.a = sigmoid.a();
@@ -185,7 +215,8 @@ std::vector<SN::Optimal_sigmoid_neighborhood> plain_loop(const SNI::Oriented_poi
           }
         }
       }
-    });
+    }
+  }
   return result;
 }
 
@@ -272,8 +303,6 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
   const auto np = SN::parameters::number_of_threads(unsigned(threads),
                                                     CGAL::parameters::point_map(CGAL::make_property_map(data.points))
                                                       .normal_map(CGAL::make_property_map(data.normals)));
-  const SNI::Oriented_points input =
-    SNI::copy_oriented_points(indices, CGAL::make_property_map(data.points), CGAL::make_property_map(data.normals));
   const double input_bytes = double(n) * (sizeof(Point_3) + sizeof(Vector_3));
 
   // (a) CGAL's PCA features at k = 20 (Sequential: CGAL's parallel code needs TBB).
@@ -287,11 +316,11 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
   });
   // the k-NN share: one query of k_max = 20 neighbors per point
   const Measure knn = measure(repeat, [&] {
-    const SNI::Neighbor_query query(input.points);
-    SNI::for_each_index<CGAL::Parallel_tag>(
-      n, unsigned(threads), [] { return std::vector<SNI::Neighbor>(); },
-      [&](std::size_t i, std::vector<SNI::Neighbor>& found) { query.query(std::uint32_t(i), 20, found); });
-    return 0.;
+    std::vector<std::uint32_t> rows;
+    std::vector<std::size_t> offsets;
+    SN::compute_k_nearest_neighbors<CGAL::Parallel_tag>(data.points, 20, rows, offsets,
+                                                        SN::parameters::number_of_threads(unsigned(threads)));
+    return double(rows.size());
   });
   // (c) the optimal search. The records are consumed as they come: the memory measured is the library's own.
   const Measure c = measure(repeat, [&] {
@@ -315,12 +344,12 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
   if(with_plain)
   {
     b = measure(repeat, [&] {
-      plain_loop(input, unsigned(threads));
+      plain_loop(data, unsigned(threads));
       return 0.;
     });
     // (a*, b*, k*, E) of (b) and (c) on every point: the number of points where they differ
     const Measure check = measure([&] {
-      const auto plain = plain_loop(input, unsigned(threads));
+      const auto plain = plain_loop(data, unsigned(threads));
       std::vector<SN::Optimal_sigmoid_neighborhood> optimal;
       SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(indices, std::back_inserter(optimal), np);
       std::size_t differ = 0;

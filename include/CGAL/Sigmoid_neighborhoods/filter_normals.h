@@ -28,6 +28,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -179,8 +180,11 @@ Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_
   summary.points = n;
   summary.iterations = s.iterations;
 
-  // The one kd-tree of the filter: the scale, the balls and the adaptive k-NN.
-  const Neighbor_query query(input.points);
+  // The one kd-tree of the filter, for the scale, the balls and the adaptive k-NN: none when the
+  // caller gives the neighborhoods of a plain filter.
+  std::optional<Neighbor_query> query;
+  if(given == nullptr || s.adaptive)
+    query.emplace(input.points);
 
   // The default neighborhoods Omega_i, built once (yadav-normal-filtering.md §2).
   Neighbor_lists ball;
@@ -193,10 +197,10 @@ Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_
         throw std::invalid_argument("filter_normals(): the default radius needs at least " +
                                     std::to_string(FILTER_SCALE_NEIGHBORS + 1) + " points, got " + std::to_string(n) +
                                     " (or give neighbor_radius or neighborhoods)");
-      radius = FILTER_RADIUS_FACTOR * mean_neighbor_distance<ConcurrencyTag>(query, FILTER_SCALE_NEIGHBORS, s.threads);
+      radius = FILTER_RADIUS_FACTOR * mean_neighbor_distance<ConcurrencyTag>(*query, FILTER_SCALE_NEIGHBORS, s.threads);
     }
     summary.radius = radius;
-    ball = ball_neighborhoods<ConcurrencyTag>(query, radius, s.threads);
+    ball = ball_neighborhoods<ConcurrencyTag>(*query, radius, s.threads);
   }
   const Neighbor_lists& omega = given != nullptr ? *given : ball;
   summary.mean_neighbors = double(omega.indices.size()) / double(n);
@@ -225,7 +229,7 @@ Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_
     for_each_index<ConcurrencyTag>(
       n, s.threads, [] { return std::vector<Neighbor>(); },
       [&](std::size_t i, std::vector<Neighbor>& found) {
-        query.query(static_cast<std::uint32_t>(i), k_high[i], found);
+        query->query(static_cast<std::uint32_t>(i), k_high[i], found);
         std::copy(found.begin(), found.end(), knn.begin() + std::ptrdiff_t(knn_offsets[i]));
       });
   }

@@ -47,11 +47,12 @@ constexpr double LARGEST_WEIGHT_NOISE = 1e-9;
 // The rounding of the covariance from moments and of the exact two-pass covariance, relative to
 // what cancelled: 100 eps, rounded up.
 constexpr double COVARIANCE_ROUNDING = 1e-13;
-// A trace within this share of s0 r^2 of the degenerate threshold is decided by the exact path.
+// A trace below this share of s0 r^2, near the degenerate threshold, is decided by the exact path.
 constexpr double DEGENERATE_TRACE_MARGIN = 1e-6;
 
-// The search of SPEC §5 at every point: one k_max query per point, every (a, b, k) of the grid
-// evaluated from it, with the result of the plain loop bit for bit. Two things save time:
+// The search of SPEC §5 at every point: every (a, b, k) of the grid evaluated from the neighborhood
+// N_i(k_max) it is handed (for_each_neighborhood()), with the result of the plain loop bit for bit.
+// Two things save time:
 // - pairs whose weights agree on N_i(k) share the exact result of the first of them (the same
 //   inputs through the same code give the same bits);
 // - every triple first gets a cheap approximate error (weights from a polynomial cosine, moments
