@@ -7,10 +7,14 @@
 #include <CGAL/Sigmoid_neighborhoods/filter_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/denoising_utilities.h>
 #include <CGAL/Sigmoid_neighborhoods/subdivided_polyhedra.h>
+#include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_k_nearest_neighbors.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/compute_average_spacing.h>
+#include <CGAL/jet_estimate_normals.h>
+#include <CGAL/pca_estimate_normals.h>
 #include <CGAL/property_map.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -512,4 +516,104 @@ TEST_CASE("subdivided cube and octahedron: counts, closed, outward", "[shapes]")
   }
   Mesh empty;
   CHECK_THROWS(SN::make_subdivided_cube(0, empty));
+}
+
+namespace {
+
+// Points on a wavy surface with a little noise: no two neighbors at one distance, so that CGAL's
+// kd-tree and the package's find the same neighbors.
+Points wavy_surface(int n, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1., 1.);
+  std::normal_distribution<double> noise(0., 0.002);
+  Points points;
+  for(int i = 0; i < n; ++i)
+  {
+    const double x = u(rng), y = u(rng);
+    points.emplace_back(Point(x, y, 0.3 * std::sin(2 * x) * std::cos(y) + noise(rng)), Vector(0, 0, 0));
+  }
+  return points;
+}
+
+// The angle between the lines of two vectors, accurate near 0 (acos of a cosine near 1 is not).
+double unoriented_angle(const Vector& n, const Vector& m)
+{
+  return std::atan2(std::sqrt(CGAL::cross_product(n, m).squared_length()), std::abs(n * m));
+}
+
+} // namespace
+
+TEST_CASE("estimate_normals: a plane, exactly, with both methods", "[normals]")
+{
+  Points points = wavy_surface(400, 1);
+  for(auto& p : points) // the plane z = 0.3 x - 0.2 y + 1
+    p.first = Point(p.first.x(), p.first.y(), 0.3 * p.first.x() - 0.2 * p.first.y() + 1.);
+  const Vector truth = Vector(-0.3, 0.2, 1.) / std::sqrt(1.13);
+  for(SN::Normal_estimation_method method : {SN::Normal_estimation_method::PCA, SN::Normal_estimation_method::JET})
+  {
+    SN::estimate_normals<CGAL::Sequential_tag>(points, 12, SNP::normal_estimation_method(method, maps()));
+    double worst = 0.;
+    for(const auto& p : points)
+    {
+      worst = std::max(worst, unoriented_angle(p.second, truth));
+      CHECK(p.second.squared_length() == Approx(1.).epsilon(1e-14));
+    }
+    CHECK(worst < 1e-9);
+  }
+}
+
+TEST_CASE("estimate_normals: CGAL's pca_estimate_normals and jet_estimate_normals, up to rounding", "[normals]")
+{
+  const Points points = wavy_surface(3000, 2);
+  for(unsigned int k : {8u, 18u})
+  {
+    Points cgal_pca = points, cgal_jet = points, pca = points, jet = points;
+    CGAL::pca_estimate_normals<CGAL::Sequential_tag>(cgal_pca, k, maps());
+    CGAL::jet_estimate_normals<CGAL::Sequential_tag>(cgal_jet, k, maps());
+    SN::estimate_normals<CGAL::Sequential_tag>(pca, k,
+                                               SNP::normal_estimation_method(SN::Normal_estimation_method::PCA, maps()));
+    SN::estimate_normals<CGAL::Sequential_tag>(jet, k, maps());
+    double worst_pca = 0., worst_jet = 0.;
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      worst_pca = std::max(worst_pca, unoriented_angle(pca[i].second, cgal_pca[i].second));
+      worst_jet = std::max(worst_jet, unoriented_angle(jet[i].second, cgal_jet[i].second));
+    }
+    CHECK(worst_pca < 1e-7);
+    CHECK(worst_jet < 1e-7);
+  }
+}
+
+TEST_CASE("estimate_normals: bit-identical on 1 and 2 threads, caller rows, bad input", "[normals][parallel]")
+{
+  const Points points = wavy_surface(2000, 3);
+  Points sequential = points, one = points, two = points, rows = points;
+  SN::estimate_normals<CGAL::Sequential_tag>(sequential, 10, maps());
+  SN::estimate_normals<SN::Parallel_if_available_tag>(one, 10, SNP::number_of_threads(1u, maps()));
+  SN::estimate_normals<SN::Parallel_if_available_tag>(two, 10, SNP::number_of_threads(2u, maps()));
+  std::vector<std::uint32_t> indices;
+  std::vector<std::size_t> offsets;
+  SN::compute_k_nearest_neighbors<CGAL::Sequential_tag>(points, 10, indices, offsets, maps());
+  SN::estimate_normals<CGAL::Sequential_tag>(rows, 10, SNP::neighbor_indices(indices, SNP::neighbor_offsets(offsets, maps())));
+  CHECK(normals_of(one) == normals_of(sequential));
+  CHECK(normals_of(two) == normals_of(sequential));
+  CHECK(normals_of(rows) == normals_of(sequential));
+
+  // too few points per fit for the jet, a line for PCA, fewer points than k, a NaN
+  Points copy = points;
+  CHECK_THROWS_WITH(SN::estimate_normals<CGAL::Sequential_tag>(copy, 4, maps()),
+                    Catch::Contains("jet fitting of degree 2 needs at least 5 neighbors per point, got k = 4"));
+  Points line;
+  for(int i = 0; i < 30; ++i)
+    line.emplace_back(Point(i, 2 * i, 0), Vector(0, 0, 0));
+  CHECK_THROWS_WITH(SN::estimate_normals<CGAL::Sequential_tag>(
+                      line, 6, SNP::normal_estimation_method(SN::Normal_estimation_method::PCA, maps())),
+                    Catch::Contains("lie on a line: no normal (pca)"));
+  Points few(points.begin(), points.begin() + 4);
+  CHECK_THROWS_WITH(SN::estimate_normals<CGAL::Sequential_tag>(few, 6, maps()),
+                    Catch::Contains("needs at least k + 1 = 7 points, got 4"));
+  copy[7].first = Point(std::nan(""), 0, 0);
+  CHECK_THROWS_WITH(SN::estimate_normals<CGAL::Sequential_tag>(copy, 10, maps()),
+                    Catch::Contains("point 7 has a non-finite coordinate"));
 }
