@@ -34,13 +34,6 @@ struct Neighbor_lists
   std::size_t count(std::size_t i) const { return offsets[i + 1] - offsets[i]; }
   const std::uint32_t* begin(std::size_t i) const { return indices.data() + offsets[i]; }
   const std::uint32_t* end(std::size_t i) const { return indices.data() + offsets[i + 1]; }
-  std::size_t shortest() const
-  {
-    std::size_t result = size() == 0 ? 0 : count(0);
-    for(std::size_t i = 1; i < size(); ++i)
-      result = (std::min)(result, count(i));
-    return result;
-  }
 };
 
 template <typename Index>
@@ -81,35 +74,36 @@ Neighbor_lists neighbor_lists(const Lists& lists, std::size_t n)
   return result;
 }
 
-// The caller's neighborhoods in compressed rows, checked: `offsets` of size n + 1, starting at 0,
-// non-decreasing, ending at the size of `indices`.
+// The caller's neighborhoods in compressed rows (random-access ranges), checked: `offsets` of size
+// n + 1, starting at 0, non-decreasing, ending at the size of `indices`. Copied once, into the result.
 template <typename Indices, typename Offsets>
 Neighbor_lists neighbor_lists(const Indices& indices, const Offsets& offsets, std::size_t n)
 {
-  const std::vector<std::size_t> o(std::begin(offsets), std::end(offsets));
-  const std::vector<typename std::iterator_traits<decltype(std::begin(indices))>::value_type> ind(std::begin(indices),
-                                                                                                   std::end(indices));
-  if(o.size() != n + 1)
+  const auto index = std::begin(indices);
+  const auto offset = std::begin(offsets);
+  const std::size_t index_count = std::size_t(std::distance(index, std::end(indices)));
+  const std::size_t offset_count = std::size_t(std::distance(offset, std::end(offsets)));
+  if(offset_count != n + 1)
     throw std::invalid_argument("the neighbor offsets must hold one entry per point and one more (" +
-                                std::to_string(n + 1) + "), got " + std::to_string(o.size()));
-  if(o.front() != 0 || o.back() != ind.size())
+                                std::to_string(n + 1) + "), got " + std::to_string(offset_count));
+  if(std::size_t(offset[0]) != 0 || std::size_t(offset[n]) != index_count)
     throw std::invalid_argument("the neighbor offsets must start at 0 and end at the number of neighbor indices (" +
-                                std::to_string(ind.size()) + ")");
+                                std::to_string(index_count) + ")");
   for(std::size_t i = 0; i < n; ++i)
-    if(o[i + 1] < o[i])
+    if(offset[i + 1] < offset[i])
       throw std::invalid_argument("the neighbor offsets must not decrease (at point " + std::to_string(i) + ")");
   Neighbor_lists result;
   result.offsets.reserve(n + 1);
-  result.indices.reserve(ind.size());
+  result.indices.reserve(index_count);
   for(std::size_t i = 0; i < n; ++i)
   {
     struct Row
     {
-      const typename decltype(ind)::value_type *b, *e;
+      decltype(index) b, e;
       auto begin() const { return b; }
       auto end() const { return e; }
     };
-    append_checked_list(Row{ind.data() + o[i], ind.data() + o[i + 1]}, i, n, result);
+    append_checked_list(Row{index + std::ptrdiff_t(offset[i]), index + std::ptrdiff_t(offset[i + 1])}, i, n, result);
   }
   return result;
 }
