@@ -56,10 +56,8 @@ void compute_k_nearest_neighbors(const PointRange& points, unsigned int k, std::
   typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
   if(k < 1)
     throw std::invalid_argument("the number of neighbors k must be at least 1");
-  const auto point_map = NP_helper::get_const_point_map(points, np);
-  std::vector<internal::Double_point> copy;
-  for(const auto& item : points)
-    copy.push_back(internal::checked_point(get(point_map, item), "point", copy.size()));
+  const std::vector<internal::Double_point> copy =
+    internal::checked_points(points, NP_helper::get_const_point_map(points, np));
   if(copy.size() > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
     throw std::invalid_argument("compute_k_nearest_neighbors(): more than 2^32 - 1 points");
   const std::size_t n = copy.size();

@@ -50,10 +50,8 @@ double compute_mean_neighbor_distance(const PointRange& points, unsigned int k,
                                       const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
-  const auto point_map = NP_helper::get_const_point_map(points, np);
-  std::vector<internal::Double_point> copy;
-  for(const auto& item : points)
-    copy.push_back(internal::checked_point(get(point_map, item), "point", copy.size()));
+  const std::vector<internal::Double_point> copy =
+    internal::checked_points(points, NP_helper::get_const_point_map(points, np));
   return internal::mean_neighbor_distance<ConcurrencyTag>(internal::Neighbor_query(copy), k,
                                                           internal::number_of_threads(np));
 }

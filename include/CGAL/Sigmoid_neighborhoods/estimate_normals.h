@@ -186,10 +186,8 @@ void estimate_normals(PointRange& points, unsigned int k, const CGAL_NP_CLASS& n
                                 " needs at least " + std::to_string(fewest - 1) + " neighbors per point, got k = " +
                                 std::to_string(k));
 
-  const auto point_map = NP_helper::get_const_point_map(points, np);
-  std::vector<internal::Double_point> copy;
-  for(const auto& item : points)
-    copy.push_back(internal::checked_point(get(point_map, item), "point", copy.size()));
+  const std::vector<internal::Double_point> copy =
+    internal::checked_points(points, NP_helper::get_const_point_map(points, np));
   if(copy.size() < std::size_t(k) + 1)
     throw std::invalid_argument("estimate_normals(): needs at least k + 1 = " + std::to_string(k + 1) +
                                 " points, got " + std::to_string(copy.size()));

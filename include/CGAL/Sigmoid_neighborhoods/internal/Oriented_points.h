@@ -56,6 +56,17 @@ Double_point checked_point(const Point& p, const char* what, std::size_t i)
   return Double_point(x, y, z);
 }
 
+// The positions of a point range through its map, each checked by checked_point().
+template <typename PointRange, typename PointMap>
+std::vector<Double_point> checked_points(const PointRange& range, PointMap point_map)
+{
+  std::vector<Double_point> result;
+  result.reserve(std::size_t(std::distance(std::begin(range), std::end(range))));
+  for(const auto& item : range)
+    result.push_back(checked_point(get(point_map, item), "point", result.size()));
+  return result;
+}
+
 // A normal as a unit vector in double, or false when it is zero or not finite (its squared
 // length included: a normal too long to square is as unusable as an infinite one).
 template <typename Vector>

@@ -84,8 +84,14 @@ Mesh_points mesh_points(const PolygonMesh& mesh, const NamedParameters& np)
   else
     CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, normals, np);
 
-  // The vertices with a face and a defined normal, in index order, and their positions.
-  std::vector<std::pair<std::size_t, Vertex>> candidates;
+  // The vertices with a face and a defined normal, their positions and unit normals, in index order.
+  struct Candidate
+  {
+    std::size_t index;
+    Double_point position;
+    Eigen::Vector3d normal;
+  };
+  std::vector<Candidate> candidates;
   for(Vertex v : vertices(mesh))
   {
     if(is_isolated_vertex(v, mesh))
@@ -94,21 +100,21 @@ Mesh_points mesh_points(const PolygonMesh& mesh, const NamedParameters& np)
       continue;
     }
     const std::size_t index = std::size_t(get(index_map, v));
-    checked_point(get(point_map, v), "vertex", index);
+    const Double_point position = checked_point(get(point_map, v), "vertex", index);
     Eigen::Vector3d normal;
     if(!unit_normal(get(normals, v), normal))
     {
       ++result.summary.undefined_normals;
       continue;
     }
-    candidates.emplace_back(index, v);
+    candidates.push_back(Candidate{index, position, normal});
   }
   std::sort(candidates.begin(), candidates.end(),
-            [](const auto& x, const auto& y) { return x.first < y.first; });
+            [](const Candidate& x, const Candidate& y) { return x.index < y.index; });
   std::vector<Double_point> positions;
   positions.reserve(candidates.size());
-  for(const auto& c : candidates)
-    positions.push_back(checked_point(get(point_map, c.second), "vertex", c.first));
+  for(const Candidate& c : candidates)
+    positions.push_back(c.position);
 
   // Vertices at one position become the first of them in index order.
   const Merged_positions merged = merge_equal_positions(positions);
@@ -117,13 +123,11 @@ Mesh_points mesh_points(const PolygonMesh& mesh, const NamedParameters& np)
   result.input.normals.reserve(merged.first.size());
   for(std::size_t first : merged.first)
   {
-    Eigen::Vector3d normal;
-    unit_normal(get(normals, candidates[first].second), normal);
-    result.input.points.push_back(positions[first]);
-    result.input.normals.push_back(normal);
+    result.input.points.push_back(candidates[first].position);
+    result.input.normals.push_back(candidates[first].normal);
   }
   for(std::size_t c = 0; c < candidates.size(); ++c)
-    result.point_of_vertex[candidates[c].first] = std::uint32_t(merged.position_of[c]);
+    result.point_of_vertex[candidates[c].index] = std::uint32_t(merged.position_of[c]);
   result.point_in_vertex_order.reserve(result.summary.vertices);
   for(Vertex v : vertices(mesh))
     result.point_in_vertex_order.push_back(result.point_of_vertex[std::size_t(get(index_map, v))]);
