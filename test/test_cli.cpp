@@ -236,6 +236,114 @@ TEST_CASE("CLI: a scan without normals gets estimated normals and says so", "[cl
   CHECK((outward == 0 || outward == 500));
 }
 
+// How many rows of an optimal CSV have normals pointing away from the origin (a sphere's outside).
+int outward_rows(const std::vector<std::vector<std::string>>& rows)
+{
+  int outward = 0;
+  for(std::size_t i = 1; i < rows.size(); ++i)
+    outward += std::stod(rows[i][0]) * std::stod(rows[i][3]) + std::stod(rows[i][1]) * std::stod(rows[i][4]) +
+                 std::stod(rows[i][2]) * std::stod(rows[i][5]) >
+               0.;
+  return outward;
+}
+
+TEST_CASE("CLI: --normals, --normal-neighbors, --orientation, --viewpoint, --line-angles", "[cli][normals]")
+{
+  const std::string raw = sphere_xyz(500, false, "raw_options.xyz");
+  const std::string with_normals = sphere_xyz(500, true, "oriented_options.xyz");
+  const std::string csv = path("options.csv");
+
+  // the default: PCA on 18 neighbors, a spanning forest seeded at the top (+z): outward on a sphere
+  Run r = run("optimal " + raw + " -o " + csv);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.find("normals estimated by pca on 18 neighbors for 500 points, oriented by a spanning forest of 1 tree,") !=
+        std::string::npos);
+  CHECK(outward_rows(read_csv(csv)) == 500);
+
+  r = run("optimal " + raw + " -o " + csv + " --normals jet --normal-neighbors 12");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.find("normals estimated by jet on 12 neighbors") != std::string::npos);
+  CHECK(outward_rows(read_csv(csv)) == 500);
+
+  // a viewpoint at the center turns every normal inwards
+  r = run("optimal " + raw + " -o " + csv + " --viewpoint 0 0 0");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.find("oriented towards the viewpoint") != std::string::npos);
+  CHECK(outward_rows(read_csv(csv)) == 0);
+
+  // the file's normals, or estimated ones in their place
+  r = run("optimal " + with_normals + " -o " + csv + " --normals file");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.find("normals from the file") != std::string::npos);
+  r = run("optimal " + with_normals + " -o " + csv + " --normals pca --orientation none");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.find("normals estimated by pca on 18 neighbors for 500 points, not oriented") != std::string::npos);
+
+  // line angles: the search blind to the signs, so oriented and unoriented normals give one CSV but its normals
+  const std::string oriented_csv = path("lines_oriented.csv");
+  r = run("optimal " + raw + " -o " + oriented_csv + " --line-angles");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.find(", line angles,") != std::string::npos);
+  REQUIRE(run("optimal " + raw + " -o " + csv + " --line-angles --orientation none").exit_code == 0);
+  const auto a = read_csv(oriented_csv), b = read_csv(csv);
+  REQUIRE(a.size() == b.size());
+  for(std::size_t i = 1; i < a.size(); ++i)
+    CHECK(std::vector<std::string>(a[i].begin() + 6, a[i].end()) == std::vector<std::string>(b[i].begin() + 6, b[i].end()));
+
+  // filter-normals takes the same options
+  r = run("filter-normals " + raw + " -o " + path("filtered.xyz") + " --normals jet --line-angles --iterations 2");
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.err.find("normals estimated by jet on 18 neighbors") != std::string::npos);
+
+  // bad usage: one line, exit 2, no output
+  std::remove(csv.c_str());
+  for(const auto& bad : std::vector<std::pair<std::string, std::string>>{
+        {"--normals file", "the file has no normals"},
+        {"--normals best", "--normals must be auto, file, pca or jet, got 'best'"},
+        {"--normal-neighbors 1", "--normal-neighbors must be at least 2 for pca"},
+        {"--normals jet --normal-neighbors 4", "--normal-neighbors must be at least 5 for jet fitting (degree 2)"},
+        {"--orientation sideways", "--orientation must be mst, viewpoint or none, got 'sideways'"},
+        {"--orientation viewpoint", "--orientation viewpoint needs --viewpoint X Y Z"},
+        {"--viewpoint 1 2", "option --viewpoint needs three values: --viewpoint X Y Z"},
+        {"--viewpoint 1 2 nan", "option --viewpoint needs three finite numbers, got '1 2 nan'"},
+        {"--viewpoint 1 2 3 --orientation mst", "--viewpoint goes with --orientation viewpoint, not mst"}})
+  {
+    r = run("optimal " + raw + " -o " + csv + " " + bad.first);
+    CHECK(r.exit_code == 2);
+    CHECK(r.err.find(bad.second) != std::string::npos);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(exists(csv));
+  }
+}
+
+TEST_CASE("CLI: evaluate records the normals of each model and of the run", "[cli][normals]")
+{
+  const std::string folder = path("normals_repository");
+  std::filesystem::create_directories(folder);
+  sphere_xyz(400, false, "normals_repository/raw.xyz");
+  sphere_xyz(400, true, "normals_repository/oriented.xyz");
+  const std::string out = path("normals_evaluation");
+  const Run r = run("evaluate " + folder + " -o " + out + " --normals jet --normal-neighbors 10");
+  REQUIRE(r.exit_code == 0);
+  const std::string raw = read_text(out + "/models/raw.xyz.json");
+  CHECK(raw.find("\"normals\": \"estimated\"") != std::string::npos);
+  CHECK(raw.find("\"normal_method\": \"jet\"") != std::string::npos);
+  CHECK(raw.find("\"normal_neighbors\": 10") != std::string::npos);
+  CHECK(raw.find("\"normal_components\": 1") != std::string::npos);
+  // --normals jet estimates where the file has normals too
+  CHECK(read_text(out + "/models/oriented.xyz.json").find("\"normal_method\": \"jet\"") != std::string::npos);
+  const std::string run_json = read_text(out + "/run.json");
+  CHECK(run_json.find("\"points_with_estimated_normals\": 800") != std::string::npos);
+  CHECK(run_json.find("\"normals\": \"jet\"") != std::string::npos);
+  // a shard with other normal settings does not merge
+  const std::string other = path("normals_evaluation_pca");
+  const std::string other_file = sphere_xyz(300, false, "normals_other.xyz");
+  REQUIRE(run("evaluate " + other_file + " -o " + other + " --repository normals_repository").exit_code == 0);
+  const Run merged = run("merge " + out + " " + other + " -o " + path("normals_merged"));
+  CHECK(merged.exit_code == 2);
+  CHECK(merged.err.find("was computed with other settings than the other models") != std::string::npos);
+}
+
 TEST_CASE("CLI: duplicate points are merged and counted", "[cli]")
 {
   std::string text = read_text(sphere_xyz(100, true, "dup_base.xyz"));
@@ -351,7 +459,7 @@ TEST_CASE("CLI: the bad-input corpus gives the expected exit code and message", 
   CHECK(folder.err.find("is a folder") != std::string::npos);
   CHECK(run("optimal '" + dir + "/missing.off' -o " + path("missing.csv")).exit_code == 2);
   // jet fitting needs 6 points: fewer estimation neighbors is a caller's error, not the file's
-  CHECK_THROWS_AS(SN::read_oriented_point_set(dir + "/two_raw_points.xyz", 3), std::invalid_argument);
+  CHECK_THROWS_AS(SN::read_oriented_point_set(dir + "/two_raw_points.xyz", 1), std::invalid_argument);
   CHECK_THROWS_AS(SN::read_oriented_point_set(dir + "/two_raw_points.xyz", 6), SN::Input_error);
 }
 
@@ -587,7 +695,7 @@ TEST_CASE("IO: the dispatcher's errors", "[io][bad-input]")
   CHECK(read_error(faceless_stl()) == "no faces in the file");
   CHECK(read_error(path("io_bad_ply.ply")) == "cannot parse the file as ply (a property before any element, line 3)");
   CHECK(read_error(huge_count_off()).find("the header announces 1000000000 vertices") == 0);
-  CHECK_THROWS_AS(SN::read_oriented_point_set(pyramid("off"), 5), std::invalid_argument);
+  CHECK_THROWS_AS(SN::read_oriented_point_set(pyramid("off"), 1), std::invalid_argument);
 }
 
 TEST_CASE("IO: read_polygon_mesh() reads as CGAL's read_polygon_mesh(), through the checked readers", "[io]")

@@ -8,12 +8,15 @@
 #include <CGAL/Sigmoid_neighborhoods/denoising_utilities.h>
 #include <CGAL/Sigmoid_neighborhoods/subdivided_polyhedra.h>
 #include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
+#include <CGAL/Sigmoid_neighborhoods/orient_normals.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_k_nearest_neighbors.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/compute_average_spacing.h>
 #include <CGAL/jet_estimate_normals.h>
+#include <CGAL/mst_orient_normals.h>
 #include <CGAL/pca_estimate_normals.h>
 #include <CGAL/property_map.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -571,9 +574,9 @@ TEST_CASE("estimate_normals: CGAL's pca_estimate_normals and jet_estimate_normal
     Points cgal_pca = points, cgal_jet = points, pca = points, jet = points;
     CGAL::pca_estimate_normals<CGAL::Sequential_tag>(cgal_pca, k, maps());
     CGAL::jet_estimate_normals<CGAL::Sequential_tag>(cgal_jet, k, maps());
-    SN::estimate_normals<CGAL::Sequential_tag>(pca, k,
-                                               SNP::normal_estimation_method(SN::Normal_estimation_method::PCA, maps()));
-    SN::estimate_normals<CGAL::Sequential_tag>(jet, k, maps());
+    SN::estimate_normals<CGAL::Sequential_tag>(pca, k, maps()); // PCA: the default
+    SN::estimate_normals<CGAL::Sequential_tag>(jet, k,
+                                               SNP::normal_estimation_method(SN::Normal_estimation_method::JET, maps()));
     double worst_pca = 0., worst_jet = 0.;
     for(std::size_t i = 0; i < points.size(); ++i)
     {
@@ -588,22 +591,49 @@ TEST_CASE("estimate_normals: CGAL's pca_estimate_normals and jet_estimate_normal
 TEST_CASE("estimate_normals: bit-identical on 1 and 2 threads, caller rows, bad input", "[normals][parallel]")
 {
   const Points points = wavy_surface(2000, 3);
-  Points sequential = points, one = points, two = points, rows = points;
-  SN::estimate_normals<CGAL::Sequential_tag>(sequential, 10, maps());
-  SN::estimate_normals<SN::Parallel_if_available_tag>(one, 10, SNP::number_of_threads(1u, maps()));
-  SN::estimate_normals<SN::Parallel_if_available_tag>(two, 10, SNP::number_of_threads(2u, maps()));
   std::vector<std::uint32_t> indices;
   std::vector<std::size_t> offsets;
-  SN::compute_k_nearest_neighbors<CGAL::Sequential_tag>(points, 10, indices, offsets, maps());
-  SN::estimate_normals<CGAL::Sequential_tag>(rows, 10, SNP::neighbor_indices(indices, SNP::neighbor_offsets(offsets, maps())));
-  CHECK(normals_of(one) == normals_of(sequential));
-  CHECK(normals_of(two) == normals_of(sequential));
-  CHECK(normals_of(rows) == normals_of(sequential));
+  SN::compute_k_nearest_neighbors<CGAL::Sequential_tag>(points, 14, indices, offsets, maps());
+  for(SN::Normal_estimation_method method : {SN::Normal_estimation_method::PCA, SN::Normal_estimation_method::JET})
+  {
+    const auto np = SNP::normal_estimation_method(method, maps());
+    Points sequential = points, one = points, two = points, copied_rows = points, rows_in_place = points;
+    SN::estimate_normals<CGAL::Sequential_tag>(sequential, 10, np);
+    SN::estimate_normals<SN::Parallel_if_available_tag>(one, 10, SNP::number_of_threads(1u, np));
+    SN::estimate_normals<SN::Parallel_if_available_tag>(two, 10, SNP::number_of_threads(2u, np));
+    // rows of 14, of which the first 10 are used: copied into the pack, or read in place (std::cref)
+    SN::estimate_normals<CGAL::Sequential_tag>(copied_rows, 10, SNP::neighbor_indices(indices, SNP::neighbor_offsets(offsets, np)));
+    SN::estimate_normals<CGAL::Sequential_tag>(
+      rows_in_place, 10, SNP::neighbor_indices(std::cref(indices), SNP::neighbor_offsets(std::cref(offsets), np)));
+    CHECK(normals_of(one) == normals_of(sequential));
+    CHECK(normals_of(two) == normals_of(sequential));
+    CHECK(normals_of(copied_rows) == normals_of(sequential));
+    CHECK(normals_of(rows_in_place) == normals_of(sequential));
+  }
 
   // too few points per fit for the jet, a line for PCA, fewer points than k, a NaN
   Points copy = points;
-  CHECK_THROWS_WITH(SN::estimate_normals<CGAL::Sequential_tag>(copy, 4, maps()),
+  CHECK_THROWS_WITH(SN::estimate_normals<CGAL::Sequential_tag>(
+                      copy, 4, SNP::normal_estimation_method(SN::Normal_estimation_method::JET, maps())),
                     Catch::Contains("jet fitting of degree 2 needs at least 5 neighbors per point, got k = 4"));
+  CHECK_THROWS_WITH(SN::estimate_normals<CGAL::Sequential_tag>(copy, 1, maps()),
+                    Catch::Contains("pca needs at least 2 neighbors per point, got k = 1"));
+  // a patch 1e-170 across, whose squared offsets underflow: scaled, PCA still finds its normal (on
+  // the neighbors of the patch at scale 1, since the kd-tree's squared distances underflow too)
+  Points tiny = points;
+  for(auto& p : tiny)
+    p.first = Point(p.first.x() * 1e-170, p.first.y() * 1e-170, p.first.z() * 1e-170);
+  SN::estimate_normals<CGAL::Sequential_tag>(
+    tiny, 10, SNP::neighbor_indices(std::cref(indices), SNP::neighbor_offsets(std::cref(offsets), maps())));
+  Points reference = points;
+  SN::estimate_normals<CGAL::Sequential_tag>(reference, 10, maps());
+  double worst_tiny = 0.;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    worst_tiny = std::max(worst_tiny, unoriented_angle(tiny[i].second, reference[i].second));
+  CHECK(worst_tiny < 1e-6);
+  Points stacked(12, Points::value_type(Point(1, 2, 3), Vector(0, 0, 0)));
+  CHECK_THROWS_WITH(SN::estimate_normals<CGAL::Sequential_tag>(stacked, 6, maps()),
+                    Catch::Contains("nearest points coincide: no normal (pca)"));
   Points line;
   for(int i = 0; i < 30; ++i)
     line.emplace_back(Point(i, 2 * i, 0), Vector(0, 0, 0));
@@ -616,4 +646,151 @@ TEST_CASE("estimate_normals: bit-identical on 1 and 2 threads, caller rows, bad 
   copy[7].first = Point(std::nan(""), 0, 0);
   CHECK_THROWS_WITH(SN::estimate_normals<CGAL::Sequential_tag>(copy, 10, maps()),
                     Catch::Contains("point 7 has a non-finite coordinate"));
+}
+
+namespace {
+
+// Two unit spheres, 10 apart (so that no k-NN edge joins them), the second lower; radial normals
+// with random signs.
+Points two_spheres(int n_each, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::bernoulli_distribution flip(0.5);
+  Points points;
+  const double golden = CGAL_PI * (3. - std::sqrt(5.));
+  for(const Vector center : {Vector(0, 0, 0), Vector(10, 0, -3)})
+    for(int i = 0; i < n_each; ++i)
+    {
+      const double z = 1. - 2. * (i + 0.5) / n_each, r = std::sqrt(1. - z * z);
+      const Vector radial(r * std::cos(golden * i), r * std::sin(golden * i), z);
+      points.emplace_back(CGAL::ORIGIN + center + radial, flip(rng) ? -radial : radial);
+    }
+  return points;
+}
+
+bool points_inward(const Points& points, std::size_t i, int n_each)
+{
+  const Vector center = i < std::size_t(n_each) ? Vector(0, 0, 0) : Vector(10, 0, -3);
+  return (points[i].first - (CGAL::ORIGIN + center)) * points[i].second < 0.;
+}
+
+// The number of normals pointing into their sphere.
+std::size_t inward_normals(const Points& points, int n_each)
+{
+  std::size_t inward = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    inward += points_inward(points, i, n_each);
+  return inward;
+}
+
+} // namespace
+
+TEST_CASE("orient_normals_by_spanning_forest: every component seeded, as CGAL's MST on one", "[normals][orientation]")
+{
+  const int n_each = 1500;
+  Points points = two_spheres(n_each, 4);
+  Points forest = points;
+  CHECK(SN::orient_normals_by_spanning_forest<CGAL::Sequential_tag>(forest, 10, maps()) == 2);
+  CHECK(inward_normals(forest, n_each) == 0);
+
+  // CGAL orients the component of the highest point only
+  Points cgal = points;
+  const auto unoriented = CGAL::mst_orient_normals(cgal, 10, maps());
+  CHECK(std::size_t(std::distance(unoriented, cgal.end())) == std::size_t(n_each));
+  for(auto it = cgal.begin(); it != unoriented; ++it)
+  {
+    const auto& same = *std::find_if(forest.begin(), forest.end(), [&](const auto& p) { return p.first == it->first; });
+    CHECK(same.second == it->second);
+  }
+
+  // one and two threads, the caller's rows: the same normals, bit for bit
+  Points two = points, rows = points;
+  CHECK(SN::orient_normals_by_spanning_forest<SN::Parallel_if_available_tag>(two, 10, SNP::number_of_threads(2u, maps())) == 2);
+  std::vector<std::uint32_t> indices;
+  std::vector<std::size_t> offsets;
+  SN::compute_k_nearest_neighbors<CGAL::Sequential_tag>(points, 14, indices, offsets, maps());
+  CHECK(SN::orient_normals_by_spanning_forest<CGAL::Sequential_tag>(
+          rows, 10, SNP::neighbor_indices(std::cref(indices), SNP::neighbor_offsets(std::cref(offsets), maps()))) == 2);
+  CHECK(normals_of(two) == normals_of(forest));
+  CHECK(normals_of(rows) == normals_of(forest));
+
+  // k = 1: the nearest-neighbor graph falls apart into many trees, each seeded
+  Points pairs = points;
+  CHECK(SN::orient_normals_by_spanning_forest<CGAL::Sequential_tag>(pairs, 1, maps()) > 2);
+
+  Points bad = points;
+  bad[3].second = Vector(0, 0, 0);
+  CHECK_THROWS_WITH(SN::orient_normals_by_spanning_forest<CGAL::Sequential_tag>(bad, 10, maps()),
+                    Catch::Contains("point 3 has a zero normal"));
+  CHECK_THROWS_WITH(SN::orient_normals_by_spanning_forest<CGAL::Sequential_tag>(bad, 0, maps()),
+                    Catch::Contains("k must be at least 1"));
+  std::vector<std::size_t> short_offsets(points.size() + 1, 0);
+  std::vector<std::uint32_t> no_indices;
+  CHECK_THROWS_WITH(SN::orient_normals_by_spanning_forest<CGAL::Sequential_tag>(
+                      pairs, 10, SNP::neighbor_indices(no_indices, SNP::neighbor_offsets(short_offsets, maps()))),
+                    Catch::Contains("need at least 10 neighbors per point"));
+}
+
+TEST_CASE("orient_normals_by_spanning_forest after estimate_normals: a closed sphere outward", "[normals][orientation]")
+{
+  Points points = two_spheres(2000, 5);
+  points.resize(2000);
+  SN::estimate_normals<CGAL::Sequential_tag>(points, 12, maps());
+  CHECK(SN::orient_normals_by_spanning_forest<CGAL::Sequential_tag>(points, 12, maps()) == 1);
+  CHECK(inward_normals(points, 2000) == 0);
+}
+
+TEST_CASE("orient_normals_towards_viewpoint: every normal faces the scanner", "[normals][orientation]")
+{
+  Points points = wavy_surface(500, 6);
+  SN::estimate_normals<CGAL::Sequential_tag>(points, 10, maps());
+  const Point scanner(0.2, -0.1, -4.);
+  SN::orient_normals_towards_viewpoint(points, scanner, maps());
+  for(const auto& p : points)
+    CHECK((scanner - p.first) * p.second > 0.);
+  CHECK_THROWS_WITH(SN::orient_normals_towards_viewpoint(points, Point(std::nan(""), 0, 0), maps()),
+                    Catch::Contains("the viewpoint has a non-finite coordinate"));
+}
+
+TEST_CASE("line_angles: the search and the filter blind to the normals' signs", "[normals][line_angles]")
+{
+  const int n_each = 600;
+  const Points flipped = two_spheres(n_each, 7);
+  Points outward = flipped;
+  for(std::size_t i = 0; i < outward.size(); ++i)
+    if(points_inward(outward, i, n_each))
+      outward[i].second = -outward[i].second;
+  REQUIRE(inward_normals(outward, n_each) == 0);
+
+  auto search = [](const Points& points, bool line_angles) {
+    std::vector<SN::Optimal_sigmoid_neighborhood> records;
+    SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(points, std::back_inserter(records),
+                                                                     SNP::line_angles(line_angles, maps()));
+    return records;
+  };
+  const auto lines_flipped = search(flipped, true), lines_outward = search(outward, true);
+  const auto oriented_outward = search(outward, false), oriented_flipped = search(flipped, false);
+  std::size_t differ_oriented = 0;
+  for(std::size_t i = 0; i < flipped.size(); ++i)
+  {
+    // the same angles, so the same records, bit for bit; and on a sphere with outward normals every
+    // angle is below pi/2, so the oriented angle gives them too
+    CHECK(lines_flipped[i].a == lines_outward[i].a);
+    CHECK(lines_flipped[i].b == lines_outward[i].b);
+    CHECK(lines_flipped[i].k == lines_outward[i].k);
+    CHECK(lines_flipped[i].error() == lines_outward[i].error());
+    CHECK(lines_outward[i].error() == oriented_outward[i].error());
+    differ_oriented += oriented_flipped[i].error() != oriented_outward[i].error();
+  }
+  CHECK(differ_oriented > flipped.size() / 2); // without the option, flips change the result
+
+  // the filter: flipping an input normal flips its filtered normal, nothing else
+  Points filtered_flipped = flipped, filtered_outward = outward;
+  SN::filter_normals<CGAL::Sequential_tag>(filtered_flipped, SNP::line_angles(true, maps()));
+  SN::filter_normals<CGAL::Sequential_tag>(filtered_outward, SNP::line_angles(true, maps()));
+  for(std::size_t i = 0; i < flipped.size(); ++i)
+  {
+    const bool was_flipped = flipped[i].second != outward[i].second;
+    CHECK(filtered_flipped[i].second == (was_flipped ? -filtered_outward[i].second : filtered_outward[i].second));
+  }
 }

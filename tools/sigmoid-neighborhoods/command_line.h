@@ -12,6 +12,7 @@
 #include <CGAL/number_type_config.h>
 
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -59,12 +60,13 @@ struct Usage_error : std::runtime_error
 // argv[0] is the program and argv[1] the command: a command's own arguments start here.
 constexpr int FIRST_COMMAND_ARGUMENT = 2;
 
-// `--name value` options and positional arguments; every option must be known.
+// `--name value` options (`--name X Y Z` for the ones in `triples`) and positional arguments;
+// every option must be known.
 class Arguments
 {
 public:
   Arguments(int argc, char** argv, int first, const std::vector<std::string>& valued,
-            const std::vector<std::string>& flags = {})
+            const std::vector<std::string>& flags = {}, const std::vector<std::string>& triples = {})
   {
     for(int i = first; i < argc; ++i)
     {
@@ -80,7 +82,14 @@ public:
           arg = arg.substr(0, eq);
           has_inline = true;
         }
-        if(contains(flags, arg))
+        if(contains(triples, arg))
+        {
+          if(has_inline || i + 3 >= argc)
+            throw Usage_error("option " + arg + " needs three values: " + arg + " X Y Z");
+          m_options[arg] = std::string(argv[i + 1]) + ' ' + argv[i + 2] + ' ' + argv[i + 3];
+          i += 3;
+        }
+        else if(contains(flags, arg))
         {
           if(has_inline)
             throw Usage_error("option " + arg + " takes no value");
@@ -122,6 +131,24 @@ public:
     if(text.empty() || *end != '\0')
       throw Usage_error("option " + name + " needs a number, got '" + text + "'");
     return v;
+  }
+
+  // The three numbers of an option of `triples`.
+  std::vector<double> get_doubles(const std::string& name) const
+  {
+    const std::string text = get(name);
+    std::vector<double> values;
+    const char* at = text.c_str();
+    for(int i = 0; i < 3; ++i)
+    {
+      char* end = nullptr;
+      const double v = std::strtod(at, &end);
+      if(end == at || (*end != ' ' && *end != '\0') || !std::isfinite(v))
+        throw Usage_error("option " + name + " needs three finite numbers, got '" + text + "'");
+      values.push_back(v);
+      at = end;
+    }
+    return values;
   }
 
   // Integer options are counts: sizes, iterations, threads; a larger one is a typing error.

@@ -31,7 +31,7 @@ namespace sigmoid_tool {
 inline const char* EVALUATE_USAGE =
   "usage: sigmoid-neighborhoods evaluate INPUTS... -o OUTDIR [--repository NAME] [--shard I/N] [--threads N]\n"
   "         [--resume] [--per-point] [--only-with-normals] [--barycenter weighted|unweighted]\n"
-  "         [--k-min 6] [--k-max 20] [--fixed-k K_MAX] [--angle-tolerance 1e-6]\n"
+  "         [--k-min 6] [--k-max 20] [--fixed-k K_MAX] [--angle-tolerance 1e-6] [normals]\n"
   "  INPUTS: model files or folders (searched recursively for .off .obj .ply .stl .xyz .pwn)\n"
   "  --shard I/N: evaluate the I-th of N shares (1 <= I <= N), balanced by file size\n";
 
@@ -162,9 +162,11 @@ inline std::vector<SN::Point_evaluation> evaluate_model(const SN::Oriented_point
   namespace SNP = SN::parameters;
   std::vector<SN::Point_evaluation> result;
   result.reserve(model.points.size());
-  SN::evaluate_sigmoid_neighborhoods<SN::Parallel_if_available_tag>(
-    point_indices(model.points.size()), std::back_inserter(result),
-    with_search_options(o, SNP::cut_off_angle(s.cut_off_angle, SNP::fixed_k(s.fixed_k, model_maps(model)))));
+  with_model_neighborhoods(model, o, [&](const auto& np) {
+    SN::evaluate_sigmoid_neighborhoods<SN::Parallel_if_available_tag>(
+      point_indices(model.points.size()), std::back_inserter(result),
+      SNP::cut_off_angle(s.cut_off_angle, SNP::fixed_k(s.fixed_k, np)));
+  });
   return result;
 }
 
@@ -196,8 +198,14 @@ inline Model_result model_result(const Model_file& file, const SN::Oriented_poin
   m.input_vertices = model.input_vertices;
   m.merged_duplicates = model.merged_duplicates;
   m.dropped_vertices = model.dropped_vertices;
-  m.unoriented_normals = model.unoriented_normals;
-  m.normals = model.is_mesh ? "mesh" : (model.normals_estimated ? "estimated" : "file");
+  m.normals = model.normals_estimated ? "estimated" : (model.is_mesh ? "mesh" : "file");
+  if(model.normals_estimated)
+  {
+    m.normal_method = normal_source_name(model);
+    m.normal_neighbors = model.estimation_neighbors;
+    m.orientation = orientation_name(model.orientation);
+    m.normal_components = model.orientation_components;
+  }
   m.statistics = SN::Evaluation_statistics(s.k_min, s.k_max, s.a_grid, s.b_grid);
   for(const SN::Point_evaluation& e : evaluations)
     m.statistics.add(e);
@@ -239,11 +247,15 @@ inline std::string host_name()
 inline int run_evaluate(int argc, char** argv)
 {
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT,
-                       {"-o", "--output", "--repository", "--shard", "--threads", "--barycenter", "--k-min", "--k-max",
-                        "--fixed-k", "--angle-tolerance"},
-                       {"-h", "--help", "--resume", "--per-point", "--only-with-normals"});
+                       with_normal_options({"-o", "--output", "--repository", "--shard", "--threads", "--barycenter",
+                                            "--k-min", "--k-max", "--fixed-k", "--angle-tolerance"}),
+                       with_normal_flags({"-h", "--help", "--resume", "--per-point", "--only-with-normals"}),
+                       NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, EVALUATE_USAGE))
+  {
+    std::cout << NORMAL_USAGE;
     return EXIT_OK;
+  }
   const std::string outdir = args.output();
   if(outdir.empty())
     throw Usage_error("evaluate needs -o OUTDIR");
@@ -260,6 +272,8 @@ inline int run_evaluate(int argc, char** argv)
   settings.angle_tolerance = options.angle_tolerance;
   settings.cut_off_angle = std::acos(EVALUATION_CUT_OFF_COSINE);
   settings.a_grid = settings.b_grid = SN::default_angle_grid();
+  const SN::Normal_options normal_options = read_normal_options(args);
+  set_normal_settings(settings, normal_options, options.line_angles);
 
   std::vector<Model_file> models = find_models(args.positional());
   unsigned int shard_index = 1, shard_count = 1;
@@ -288,7 +302,7 @@ inline int run_evaluate(int argc, char** argv)
   timer.start();
   std::vector<Model_failure> failures;
   std::vector<std::string> skipped_without_normals;
-  std::size_t evaluated = 0, resumed = 0, points = 0;
+  std::size_t evaluated = 0, resumed = 0, points = 0, estimated_models = 0, estimated_points = 0, normal_trees = 0;
   for(const Model_file& file : models)
   {
     const fs::path json_path = fs::path(outdir) / "models" / (file.name + ".json");
@@ -300,7 +314,8 @@ inline int run_evaluate(int argc, char** argv)
     }
     try
     {
-      const SN::Oriented_point_set model = read_model(file.path, options.k_max, !args.has("--only-with-normals"));
+      const SN::Oriented_point_set model =
+        read_model(file.path, options.k_max, normal_options, !args.has("--only-with-normals"));
       if(model.normals.empty())
       {
         skipped_without_normals.push_back(file.name);
@@ -317,6 +332,12 @@ inline int run_evaluate(int argc, char** argv)
       write_file_atomically(json_path.string(), [&](std::ofstream& out) { write_model_json(out, result, settings); });
       ++evaluated;
       points += result.points;
+      if(model.normals_estimated)
+      {
+        ++estimated_models;
+        estimated_points += model.normals.size();
+        normal_trees += model.orientation_components;
+      }
       progress.done(file.name, result.points, file.bytes,
                     std::to_string(result.points) + " points, " + std::to_string(result.statistics.optimal.failures) +
                       " failures");
@@ -324,6 +345,12 @@ inline int run_evaluate(int argc, char** argv)
     catch(const Usage_error&)
     {
       throw; // the output folder is unusable: stop
+    }
+    catch(const std::bad_alloc&)
+    {
+      // what std::bad_alloc says is no message; the memory is back once the model is dropped
+      failures.push_back({file.name, "out of memory while evaluating the model"});
+      progress.done(file.name, 0, file.bytes, "FAILED: out of memory while evaluating the model");
     }
     catch(const std::exception& e)
     {
@@ -350,7 +377,11 @@ inline int run_evaluate(int argc, char** argv)
       .value("models_evaluated", evaluated)
       .value("models_resumed", resumed)
       .value("models_failed", failures.size())
-      .value("points_evaluated", points);
+      .value("points_evaluated", points)
+      .value("models_with_estimated_normals", estimated_models)
+      .value("points_with_estimated_normals", estimated_points)
+      .value("spanning_forest_trees", normal_trees);
+    write_settings(w, settings);
     w.begin_array("inputs");
     for(const auto& input : args.positional())
       w.value(nullptr, fs::absolute(input).lexically_normal().string());

@@ -10,6 +10,7 @@
 
 #include "command_line.h"
 #include "json.h"
+#include "model_input.h"
 
 #include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>
 
@@ -38,20 +39,60 @@ struct Evaluation_settings
   double angle_tolerance = SN::DEFAULT_ANGLE_TOLERANCE;
   double cut_off_angle = 0.;
   std::vector<double> a_grid, b_grid;
+  // the normals of files without them, and the angle of the weights (model_input.h)
+  std::string normals = "auto";
+  unsigned int normal_neighbors = SN::DEFAULT_ESTIMATION_NEIGHBORS;
+  std::string orientation = "mst";
+  std::vector<double> viewpoint; // x, y, z with orientation "viewpoint"
+  bool line_angles = false;
 
   bool operator==(const Evaluation_settings& o) const
   {
     return k_min == o.k_min && k_max == o.k_max && fixed_k == o.fixed_k && barycenter == o.barycenter &&
            angle_tolerance == o.angle_tolerance && cut_off_angle == o.cut_off_angle && a_grid == o.a_grid &&
-           b_grid == o.b_grid;
+           b_grid == o.b_grid && normals == o.normals && normal_neighbors == o.normal_neighbors &&
+           orientation == o.orientation && viewpoint == o.viewpoint && line_angles == o.line_angles;
   }
 };
+
+inline void set_normal_settings(Evaluation_settings& s, const SN::Normal_options& o, bool line_angles)
+{
+  s.normals = o.source == SN::Normal_source::AUTO        ? "auto"
+              : o.source == SN::Normal_source::FROM_FILE ? "file"
+              : o.source == SN::Normal_source::JET       ? "jet"
+                                                         : "pca";
+  s.normal_neighbors = o.neighbors;
+  s.orientation = orientation_name(o.orientation);
+  s.viewpoint.clear();
+  if(o.orientation == SN::Normal_orientation::VIEWPOINT)
+    s.viewpoint = {o.viewpoint.x(), o.viewpoint.y(), o.viewpoint.z()};
+  s.line_angles = line_angles;
+}
+
+// The normal options an evaluation was run with, for recomputing one of its models.
+inline SN::Normal_options normal_options(const Evaluation_settings& s, unsigned int threads)
+{
+  SN::Normal_options o;
+  o.source = s.normals.empty() ? SN::Normal_source::AUTO : read_normal_source(s.normals);
+  o.neighbors = s.normal_neighbors == 0 ? SN::DEFAULT_ESTIMATION_NEIGHBORS : s.normal_neighbors;
+  o.orientation = s.orientation == "viewpoint" ? SN::Normal_orientation::VIEWPOINT
+                  : s.orientation == "none"    ? SN::Normal_orientation::NONE
+                                               : SN::Normal_orientation::SPANNING_FOREST;
+  if(s.viewpoint.size() == 3)
+    o.viewpoint = SN::Oriented_point_set::Point_3(s.viewpoint[0], s.viewpoint[1], s.viewpoint[2]);
+  o.threads = threads;
+  return o;
+}
 
 struct Model_result
 {
   std::string model; // path relative to its input root, '/'-separated
-  std::size_t points = 0, input_vertices = 0, merged_duplicates = 0, dropped_vertices = 0, unoriented_normals = 0;
+  std::size_t points = 0, input_vertices = 0, merged_duplicates = 0, dropped_vertices = 0;
   std::string normals; // mesh, file or estimated
+  // estimated normals: pca or jet, their k, their orientation (mst, viewpoint, none) and its trees
+  std::string normal_method, orientation;
+  unsigned int normal_neighbors = 0;
+  std::size_t normal_components = 0;
   double k_standard_deviation = std::numeric_limits<double>::quiet_NaN();
   SN::Evaluation_statistics statistics;
 };
@@ -74,7 +115,11 @@ inline void write_settings(Json_writer& w, const Evaluation_settings& s)
 {
   w.begin_object("settings").value("k_min", s.k_min).value("k_max", s.k_max).value("fixed_k", s.fixed_k);
   w.value("barycenter", s.barycenter).value("angle_tolerance", s.angle_tolerance);
-  w.value("cut_off_angle", s.cut_off_angle).array("a_grid", s.a_grid).array("b_grid", s.b_grid).end_object();
+  w.value("cut_off_angle", s.cut_off_angle).array("a_grid", s.a_grid).array("b_grid", s.b_grid);
+  w.value("normals", s.normals).value("normal_neighbors", s.normal_neighbors).value("orientation", s.orientation);
+  if(!s.viewpoint.empty())
+    w.array("viewpoint", s.viewpoint);
+  w.value("line_angles", s.line_angles).end_object();
 }
 
 inline void write_statistics(Json_writer& w, const SN::Evaluation_statistics& s)
@@ -101,7 +146,12 @@ inline void write_model_json(std::ostream& out, const Model_result& m, const Eva
   w.begin_object().value("model", m.model).value("points", m.statistics.points);
   w.value("input_vertices", m.input_vertices).value("merged_duplicates", m.merged_duplicates);
   w.value("dropped_vertices", m.dropped_vertices).value("normals", m.normals);
-  w.value("unoriented_normals", m.unoriented_normals).value("failures", m.statistics.optimal.failures);
+  if(m.normals == "estimated")
+  {
+    w.value("normal_method", m.normal_method).value("normal_neighbors", m.normal_neighbors);
+    w.value("orientation", m.orientation).value("normal_components", m.normal_components);
+  }
+  w.value("failures", m.statistics.optimal.failures);
   w.value("k_standard_deviation", m.k_standard_deviation);
   write_settings(w, settings);
   write_statistics(w, m.statistics);
@@ -123,6 +173,13 @@ inline Evaluation_settings read_settings(const Json& tree)
   s.cut_off_angle = json_double(t, "cut_off_angle", 0.);
   s.a_grid = json_double_array(t, "a_grid");
   s.b_grid = json_double_array(t, "b_grid");
+  // absent from the files of earlier versions, which estimated normals otherwise: "" never merges with them
+  s.normals = t.get<std::string>("normals", "");
+  s.normal_neighbors = t.get<unsigned int>("normal_neighbors", 0);
+  s.orientation = t.get<std::string>("orientation", "");
+  if(t.get_child_optional("viewpoint"))
+    s.viewpoint = json_double_array(t, "viewpoint");
+  s.line_angles = t.get<bool>("line_angles", false);
   return s;
 }
 
@@ -148,8 +205,11 @@ inline Model_result read_model_json(const std::string& path, Evaluation_settings
   m.input_vertices = json_size(tree, "input_vertices");
   m.merged_duplicates = json_size(tree, "merged_duplicates");
   m.dropped_vertices = json_size(tree, "dropped_vertices");
-  m.unoriented_normals = json_size(tree, "unoriented_normals");
   m.normals = tree.get<std::string>("normals");
+  m.normal_method = tree.get<std::string>("normal_method", "");
+  m.normal_neighbors = tree.get<unsigned int>("normal_neighbors", 0);
+  m.orientation = tree.get<std::string>("orientation", "");
+  m.normal_components = tree.get<std::size_t>("normal_components", 0);
   m.k_standard_deviation = json_double(tree, "k_standard_deviation", std::numeric_limits<double>::quiet_NaN());
   SN::Evaluation_statistics& s = m.statistics;
   s = SN::Evaluation_statistics(settings.k_min, settings.k_max, settings.a_grid, settings.b_grid);

@@ -29,7 +29,7 @@ namespace sigmoid_tool {
 inline const char* FILTER_USAGE =
   "usage: sigmoid-neighborhoods filter-normals INPUT -o OUTPUT [--adaptive] [--iterations 50] [--cut-off 0.9]\n"
   "         [--eigenvalue-threshold 0.25] [--damping 3] [--radius R] [--size-range 10]\n"
-  "         [--angle-tolerance 1e-6] [--threads N]\n"
+  "         [--angle-tolerance 1e-6] [--threads N] [normals]\n"
   "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply; normals estimated when absent)\n"
   "  OUTPUT: .xyz or .pwn (x y z nx ny nz, 17 significant digits) or .ply (binary point cloud with normals)\n"
   "  --radius: the ball radius of the neighborhoods (default 5 times the mean distance to 12 neighbors)\n"
@@ -47,6 +47,7 @@ struct Filter_options
   unsigned int size_range = SN::DEFAULT_NEIGHBORHOOD_SIZE_RANGE;
   double angle_tolerance = SN::DEFAULT_ANGLE_TOLERANCE;
   unsigned int threads = 0; // 0: OpenMP's default
+  bool line_angles = false;
 };
 
 // Filters `normals` (one per point of `points`) in place.
@@ -58,13 +59,13 @@ SN::Normal_filter_summary filter_point_normals(const std::vector<Point>& points,
   std::vector<std::uint32_t> indices = point_indices(points.size()); // filter_normals() takes a mutable range
   return SN::filter_normals<SN::Parallel_if_available_tag>(
     indices,
-    SNP::number_of_threads(o.threads, SNP::normal_cut_off(o.cut_off, SNP::eigenvalue_threshold(o.eigenvalue_threshold,
+    SNP::line_angles(o.line_angles, SNP::number_of_threads(o.threads, SNP::normal_cut_off(o.cut_off, SNP::eigenvalue_threshold(o.eigenvalue_threshold,
       SNP::damping_factor(o.damping, SNP::adaptive_neighborhood_size(o.adaptive,
         SNP::neighborhood_size_range(o.size_range, SNP::angle_tolerance(o.angle_tolerance,
           CGAL::parameters::number_of_iterations(o.iterations)
             .neighbor_radius(o.radius)
             .point_map(CGAL::make_property_map(points))
-            .normal_map(CGAL::make_property_map(normals))))))))));
+            .normal_map(CGAL::make_property_map(normals)))))))))));
 }
 
 inline Filter_options read_filter_options(const Arguments& args)
@@ -87,6 +88,7 @@ inline Filter_options read_filter_options(const Arguments& args)
   o.size_range = args.get_unsigned("--size-range", o.size_range);
   o.angle_tolerance = read_angle_tolerance(args, o.angle_tolerance);
   o.threads = read_threads(args);
+  o.line_angles = read_line_angles(args);
   return o;
 }
 
@@ -125,11 +127,14 @@ inline void write_filtered_ply(std::ostream& out, const SN::Oriented_point_set& 
 inline int run_filter_normals(int argc, char** argv)
 {
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT,
-                       {"-o", "--output", "--iterations", "--cut-off", "--eigenvalue-threshold", "--damping", "--radius",
-                        "--size-range", "--angle-tolerance", "--threads"},
-                       {"-h", "--help", "--adaptive"});
+                       with_normal_options({"-o", "--output", "--iterations", "--cut-off", "--eigenvalue-threshold",
+                                            "--damping", "--radius", "--size-range", "--angle-tolerance", "--threads"}),
+                       with_normal_flags({"-h", "--help", "--adaptive"}), NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, FILTER_USAGE))
+  {
+    std::cout << NORMAL_USAGE;
     return EXIT_OK;
+  }
   const auto input_and_output = one_input_and_output(args, "filter-normals", "OUTPUT (.xyz, .pwn or .ply)");
   const std::string& input = input_and_output.first;
   const std::string& output = input_and_output.second;
@@ -138,10 +143,12 @@ inline int run_filter_normals(int argc, char** argv)
     throw Usage_error("unknown output format '" + (ext.empty() ? std::string("(no extension)") : "." + ext) +
                       "': expected .xyz, .pwn or .ply");
   const Filter_options options = read_filter_options(args);
+  const SN::Normal_options normal_options = read_normal_options(args);
 
   CGAL::Real_timer timer;
   timer.start();
-  const SN::Oriented_point_set model = read_input(input, [&] { return SN::read_oriented_point_set(input); });
+  const SN::Oriented_point_set model =
+    read_input(input, [&] { return SN::read_oriented_point_set(input, normal_options); });
   std::vector<SN::Oriented_point_set::Vector_3> normals = model.normals;
   SN::Normal_filter_summary summary;
   try
@@ -169,7 +176,8 @@ inline int run_filter_normals(int argc, char** argv)
     text += line;
   }
   std::snprintf(line, sizeof(line), ", %.2f s", timer.time());
-  std::cerr << input << ": " << model_description(model) << ", " << text << line << '\n';
+  std::cerr << input << ": " << model_description(model) << (options.line_angles ? ", line angles" : "") << ", "
+            << text << line << '\n';
   return EXIT_OK;
 }
 

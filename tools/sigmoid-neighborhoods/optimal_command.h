@@ -7,6 +7,7 @@
 #define SIGMOID_NEIGHBORHOODS_TOOL_OPTIMAL_COMMAND_H
 
 #include "command_line.h"
+#include "model_input.h"
 
 #include <CGAL/Sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
@@ -29,7 +30,7 @@ namespace SN = CGAL::Sigmoid_neighborhoods;
 
 inline const char* OPTIMAL_USAGE =
   "usage: sigmoid-neighborhoods optimal INPUT -o OUT.csv [--ply OUT.ply] [--k-min 6] [--k-max 20]\n"
-  "         [--barycenter weighted|unweighted] [--angle-tolerance 1e-6] [--threads N]\n"
+  "         [--barycenter weighted|unweighted] [--angle-tolerance 1e-6] [--threads N] [normals]\n"
   "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply; normals estimated when absent)\n";
 
 struct Search_options
@@ -38,6 +39,7 @@ struct Search_options
   SN::Barycenter barycenter = SN::Barycenter::WEIGHTED;
   double angle_tolerance = SN::DEFAULT_ANGLE_TOLERANCE;
   unsigned int threads = 0; // 0: OpenMP's default
+  bool line_angles = false;
 };
 
 inline Search_options read_search_options(const Arguments& args)
@@ -54,36 +56,8 @@ inline Search_options read_search_options(const Arguments& args)
     throw Usage_error("--barycenter must be weighted or unweighted, got '" + bary + "'");
   o.angle_tolerance = read_angle_tolerance(args, o.angle_tolerance);
   o.threads = read_threads(args);
+  o.line_angles = read_line_angles(args);
   return o;
-}
-
-// Reads INPUT and checks that the search can run on it; Input_error carries the reason.
-// Without `estimate_normals`, a point set without normals comes back with no normals.
-inline SN::Oriented_point_set read_model(const std::string& path, unsigned int k_max, bool estimate_normals = true)
-{
-  SN::Oriented_point_set model =
-    SN::read_oriented_point_set(path, estimate_normals ? SN::DEFAULT_ESTIMATION_NEIGHBORS : 0);
-  if(model.points.size() < std::size_t(k_max) + 1)
-    throw SN::Input_error("needs at least k_max + 1 = " + std::to_string(k_max + 1) + " distinct points, got " +
-                          std::to_string(model.points.size()) +
-                          (model.dropped_vertices == 0 ? std::string()
-                                                       : " (" + std::to_string(model.dropped_vertices) +
-                                                           " vertices dropped: no face or no defined normal)"));
-  return model;
-}
-
-inline std::string model_description(const SN::Oriented_point_set& model)
-{
-  std::string s = std::to_string(model.points.size()) + " points (";
-  if(model.is_mesh)
-    s += "mesh vertex normals, " + std::to_string(model.dropped_vertices) + " dropped vertices, ";
-  else if(model.normals_estimated)
-    s += "normals estimated by jet fitting and MST orientation, " + std::to_string(model.unoriented_normals) +
-         " left unoriented, ";
-  else
-    s += "normals from the file, ";
-  s += std::to_string(model.merged_duplicates) + " merged duplicates)";
-  return s;
 }
 
 // CGAL's point and normal maps over the points of `model`, indexed by point_indices().
@@ -98,8 +72,22 @@ template <typename NamedParameters>
 auto with_search_options(const Search_options& o, const NamedParameters& np)
 {
   namespace SNP = SN::parameters;
-  return SNP::number_of_threads(o.threads, SNP::k_min(o.k_min, SNP::k_max(o.k_max, SNP::barycenter(o.barycenter,
-    SNP::angle_tolerance(o.angle_tolerance, np)))));
+  return SNP::line_angles(o.line_angles, SNP::number_of_threads(o.threads, SNP::k_min(o.k_min, SNP::k_max(o.k_max,
+    SNP::barycenter(o.barycenter, SNP::angle_tolerance(o.angle_tolerance, np))))));
+}
+
+// Runs `search(np)` with the model's maps and the search options, and with the model's neighbor
+// rows when its normal estimation kept them (one neighbor structure for both steps).
+template <typename Search>
+void with_model_neighborhoods(const SN::Oriented_point_set& model, const Search_options& o, const Search& search)
+{
+  namespace SNP = SN::parameters;
+  if(model.neighbor_offsets.empty())
+    search(with_search_options(o, model_maps(model)));
+  else
+    search(with_search_options(o, SNP::neighbor_indices(std::cref(model.neighbor_indices),
+                                                        SNP::neighbor_offsets(std::cref(model.neighbor_offsets),
+                                                                              model_maps(model)))));
 }
 
 inline std::vector<SN::Optimal_sigmoid_neighborhood> optimal_search(const SN::Oriented_point_set& model,
@@ -107,8 +95,10 @@ inline std::vector<SN::Optimal_sigmoid_neighborhood> optimal_search(const SN::Or
 {
   std::vector<SN::Optimal_sigmoid_neighborhood> records;
   records.reserve(model.points.size());
-  SN::compute_optimal_sigmoid_neighborhoods<SN::Parallel_if_available_tag>(
-    point_indices(model.points.size()), std::back_inserter(records), with_search_options(o, model_maps(model)));
+  with_model_neighborhoods(model, o, [&](const auto& np) {
+    SN::compute_optimal_sigmoid_neighborhoods<SN::Parallel_if_available_tag>(point_indices(model.points.size()),
+                                                                             std::back_inserter(records), np);
+  });
   return records;
 }
 
@@ -201,19 +191,25 @@ inline void write_optimal_ply(std::ostream& out, const SN::Oriented_point_set& m
 inline int run_optimal(int argc, char** argv)
 {
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT,
-                       {"-o", "--output", "--ply", "--k-min", "--k-max", "--barycenter", "--angle-tolerance", "--threads"},
-                       {"-h", "--help"});
+                       with_normal_options({"-o", "--output", "--ply", "--k-min", "--k-max", "--barycenter",
+                                            "--angle-tolerance", "--threads"}),
+                       with_normal_flags({"-h", "--help"}), NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, OPTIMAL_USAGE))
+  {
+    std::cout << NORMAL_USAGE;
     return EXIT_OK;
+  }
   const auto input_and_output = one_input_and_output(args, "optimal", "OUT.csv");
   const std::string& input = input_and_output.first;
   const std::string& csv = input_and_output.second;
   const std::string ply = args.get("--ply");
   const Search_options options = read_search_options(args);
+  const SN::Normal_options normal_options = read_normal_options(args);
 
   CGAL::Real_timer timer;
   timer.start();
-  const SN::Oriented_point_set model = read_input(input, [&] { return read_model(input, options.k_max); });
+  const SN::Oriented_point_set model =
+    read_input(input, [&] { return read_model(input, options.k_max, normal_options); });
   const auto records = optimal_search(model, options);
   std::size_t failures = 0;
   for(const auto& r : records)
@@ -225,7 +221,8 @@ inline int run_optimal(int argc, char** argv)
   timer.stop();
   char seconds[32];
   std::snprintf(seconds, sizeof(seconds), "%.2f", timer.time());
-  std::cerr << input << ": " << model_description(model) << ", " << failures << " failures, " << seconds << " s\n";
+  std::cerr << input << ": " << model_description(model) << (options.line_angles ? ", line angles" : "") << ", "
+            << failures << " failures, " << seconds << " s\n";
   return EXIT_OK;
 }
 

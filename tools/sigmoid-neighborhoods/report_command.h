@@ -215,7 +215,10 @@ inline int run_report(int argc, char** argv)
     options.k_max = settings.k_max;
     options.barycenter = settings.barycenter == "unweighted" ? SN::Barycenter::UNWEIGHTED : SN::Barycenter::WEIGHTED;
     options.angle_tolerance = settings.angle_tolerance;
-    const SN::Oriented_point_set model = read_input(model_path, [&] { return read_model(model_path, options.k_max); });
+    options.line_angles = settings.line_angles;
+    const SN::Normal_options normals = normal_options(settings, options.threads);
+    const SN::Oriented_point_set model =
+      read_input(model_path, [&] { return read_model(model_path, options.k_max, normals); });
     const auto evaluations = evaluate_model(model, options, settings);
     figure3_csv = (fs::path(outdir) / "figure3_points.csv").string();
     write_file_atomically(figure3_csv, [&](std::ofstream& out) { write_evaluation_csv(out, model, evaluations); });

@@ -153,6 +153,19 @@ double normal_angle(const Vector& n, const Vector& m)
   return std::acos(std::clamp(c, -1., 1.));
 }
 
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  the angle in `[0, pi/2]` between the lines of two unit vectors, `acos |n . m|` clamped: the
+  weights' angle of the named parameter `line_angles`, for normals whose signs mean nothing
+  (`doc/specification.md`, "Line angles").
+*/
+template <typename Vector>
+double normal_line_angle(const Vector& n, const Vector& m)
+{
+  const double c = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
+  return std::acos((std::min)(std::abs(c), 1.));
+}
+
 } // namespace Sigmoid_neighborhoods
 } // namespace CGAL
 

@@ -114,7 +114,8 @@ compute_optimal_sigmoid_neighborhoods(const PointRange& points, OutputIterator o
   typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
   static_assert(NP_helper::has_normal_map(), "compute_optimal_sigmoid_neighborhoods() needs a normal map");
   const auto input = internal::copy_oriented_points(points, NP_helper::get_const_point_map(points, np),
-                                                    NP_helper::get_normal_map(points, np));
+                                                    NP_helper::get_normal_map(points, np),
+                                                    internal::line_angles(np));
   const internal::Neighbor_query query = internal::neighbor_query(input.points, np);
   internal::optimal_search_all<ConcurrencyTag>(
     input, query, internal::search_settings(np),

@@ -118,7 +118,8 @@ compute_sigmoid_features(const PointRange& points, const Cosine_sigmoid& sigmoid
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const auto input = internal::copy_oriented_points(points, NP_helper::get_const_point_map(points, np),
-                                                    NP_helper::get_normal_map(points, np));
+                                                    NP_helper::get_normal_map(points, np),
+                                                    internal::line_angles(np));
   const Barycenter barycenter = choose_parameter(get_parameter(np, internal_np::barycenter), Barycenter::WEIGHTED);
   const internal::Neighbor_query query = internal::neighbor_query(input.points, np);
   for(const Dimensionality_features& f : internal::features_all<ConcurrencyTag>(input, query, sigmoid, k, barycenter,

@@ -44,6 +44,10 @@ enum class Normal_estimation_method
 };
 
 /// \ingroup PkgSigmoidNeighborhoodsRef
+/// The default method of `estimate_normals()` and of the readers.
+constexpr Normal_estimation_method DEFAULT_NORMAL_ESTIMATION_METHOD = Normal_estimation_method::PCA;
+
+/// \ingroup PkgSigmoidNeighborhoodsRef
 /// The default degree of the jet of `Normal_estimation_method::JET`, CGAL's.
 constexpr unsigned int DEFAULT_JET_DEGREE = 2;
 
@@ -64,18 +68,27 @@ struct Normal_estimation_scratch
   std::vector<Double_point> points;
 };
 
-// PCA on the point and its neighbors: offsets from the point (as the features take them), the
-// two-pass covariance about their centroid, Eigen's iterative solver (SPEC §4).
+// PCA on the point and its neighbors: offsets from the point (as the features take them), scaled
+// by a power of 2 (exactly) to a largest length in [1, 2) so that no square underflows or
+// overflows, the two-pass covariance about their centroid, Eigen's iterative solver (SPEC §4).
 inline Eigen::Vector3d pca_normal(const std::vector<Double_point>& points, std::uint32_t i,
                                   Normal_estimation_scratch& s)
 {
   const Double_point& p = points[i];
   s.offsets.assign(1, Eigen::Vector3d::Zero());
+  double largest = 0.;
   for(const Neighbor& n : s.neighbors)
   {
     const Double_point& q = points[n.index];
     s.offsets.emplace_back(q.x() - p.x(), q.y() - p.y(), q.z() - p.z());
+    largest = (std::max)(largest, s.offsets.back().lpNorm<Eigen::Infinity>());
   }
+  if(!(largest > 0.))
+    throw std::invalid_argument("point " + std::to_string(i) + " and its " + std::to_string(s.neighbors.size()) +
+                                " nearest points coincide: no normal (pca)");
+  const double scale = std::ldexp(1., -std::ilogb(largest));
+  for(Eigen::Vector3d& offset : s.offsets)
+    offset *= scale;
   s.weights.assign(s.offsets.size(), 1.);
   Weighted_covariance covariance;
   accumulate_covariance(s.offsets.data(), s.weights.data(), s.offsets.size(), Barycenter::UNWEIGHTED, covariance);
@@ -116,10 +129,13 @@ inline Eigen::Vector3d jet_normal(const std::vector<Double_point>& points, std::
   \brief estimates an unoriented unit normal at every point from the point and its `k` nearest other
   points (ties by index, SPEC §2; CGAL's convention for `k`), and writes it to `normal_map`.
 
-  `Normal_estimation_method::PCA`: the eigenvector of the smallest eigenvalue of the covariance of
-  the `k + 1` points, from Eigen's iterative solver (SPEC §4), as `CGAL::pca_estimate_normals()`;
-  `Normal_estimation_method::JET` (the default): the normal of the jet of degree `degree_fitting`
-  fitted by `CGAL::Monge_via_jet_fitting`, as `CGAL::jet_estimate_normals()`. On the same
+  `Normal_estimation_method::PCA` (the default): the eigenvector of the smallest eigenvalue of the
+  covariance of the `k + 1` points, from Eigen's iterative solver (SPEC §4), as
+  `CGAL::pca_estimate_normals()`; `Normal_estimation_method::JET`: the normal of the jet of degree
+  `degree_fitting` fitted by `CGAL::Monge_via_jet_fitting`, as `CGAL::jet_estimate_normals()`. PCA is
+  the default for its speed (4 to 5 times jet fitting's) and its accuracy on noisy data
+  (`benchmark/README.md`, "Normal estimation"); jet fitting is more accurate on curved surfaces
+  without noise. On the same
   neighbors, both give CGAL's normals up to rounding and sign. The neighbors come from the
   package's kd-tree, or from `neighbor_indices` and `neighbor_offsets` (the first `k` entries
   of each row). Every point is computed on its own, in the package's parallel loop: the normals
@@ -148,7 +164,7 @@ inline Eigen::Vector3d jet_normal(const std::vector<Double_point>& points, std::
     \cgalParamNBegin{normal_estimation_method}
       \cgalParamDescription{PCA or jet fitting}
       \cgalParamType{`Normal_estimation_method`}
-      \cgalParamDefault{`Normal_estimation_method::JET`}
+      \cgalParamDefault{`Normal_estimation_method::PCA`}
     \cgalParamNEnd
     \cgalParamNBegin{degree_fitting}
       \cgalParamDescription{the degree of the jet (CGAL's named parameter)}
@@ -164,7 +180,7 @@ inline Eigen::Vector3d jet_normal(const std::vector<Double_point>& points, std::
   \cgalNamedParamsEnd
 
   \pre `k >= 2` (PCA) or `k + 1 >= (d + 1)(d + 2) / 2` (jet); at least `k + 1` points; finite coordinates;
-  no point whose neighbors lie on a line (PCA) or within `1e-150` of it (jet): otherwise
+  no point whose neighbors coincide with it or lie on a line (PCA) or within `1e-150` of it (jet): otherwise
   `std::invalid_argument`, never a zero normal
 */
 template <typename ConcurrencyTag, typename PointRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
@@ -175,7 +191,7 @@ void estimate_normals(PointRange& points, unsigned int k, const CGAL_NP_CLASS& n
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const Normal_estimation_method method =
-    choose_parameter(get_parameter(np, internal_np::normal_estimation_method), Normal_estimation_method::JET);
+    choose_parameter(get_parameter(np, internal_np::normal_estimation_method), DEFAULT_NORMAL_ESTIMATION_METHOD);
   const unsigned int degree = choose_parameter(get_parameter(np, CGAL::internal_np::degree_fitting), DEFAULT_JET_DEGREE);
   // points per fit: a plane needs 3, a jet of degree d its (d + 1)(d + 2) / 2 coefficients
   const unsigned int fewest = method == Normal_estimation_method::PCA ? 3u : (degree + 1) * (degree + 2) / 2;

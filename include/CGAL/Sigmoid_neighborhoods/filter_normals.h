@@ -92,6 +92,7 @@ struct Normal_filter_settings
   double angle_tolerance = DEFAULT_ANGLE_TOLERANCE;
   Barycenter barycenter = Barycenter::WEIGHTED;
   unsigned int threads = 0; // of a call with Parallel_tag; 0: the default
+  bool line_angles = false;  // the cut-off on |n_i . n_j|: normals whose signs mean nothing
 };
 
 template <typename NamedParameters>
@@ -112,6 +113,7 @@ Normal_filter_settings normal_filter_settings(const NamedParameters& np)
   s.angle_tolerance = choose_parameter(get_parameter(np, internal_np::angle_tolerance), DEFAULT_ANGLE_TOLERANCE);
   s.barycenter = choose_parameter(get_parameter(np, internal_np::barycenter), Barycenter::WEIGHTED);
   s.threads = number_of_threads(np);
+  s.line_angles = line_angles(np);
   if(!(s.cut_off >= -1. && s.cut_off <= 1.))
     throw std::invalid_argument("the normal cut-off must lie in [-1, 1], got " + std::to_string(s.cut_off));
   if(!std::isfinite(s.eigenvalue_threshold))
@@ -139,7 +141,8 @@ bool voting_tensor_update(const std::vector<Eigen::Vector3d>& normals, std::size
   for(Iterator it = begin; it != end; ++it)
   {
     const Eigen::Vector3d& m = normals[index_of(*it)];
-    if(equal_weights || n[0] * m[0] + n[1] * m[1] + n[2] * m[2] > s.cut_off)
+    const double c = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
+    if(equal_weights || (s.line_angles ? std::abs(c) : c) > s.cut_off)
     {
       tensor.noalias() += m * m.transpose();
       ++count;
@@ -260,13 +263,11 @@ Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_
           const Neighbor* found = knn.data() + knn_offsets[i];
           const std::size_t count = knn_offsets[i + 1] - knn_offsets[i];
           unsigned char* weights = cached_weights.data() + knn_offsets[i] + i;
-          const Eigen::Vector3d& ni = normals[i];
           bool same = cached[i] != 0;
           for(std::size_t j = 0; j < count; ++j)
           {
-            const Eigen::Vector3d& nj = normals[found[j].index];
             const unsigned char w =
-              sigmoid.weight_from_cosine(ni[0] * nj[0] + ni[1] * nj[1] + ni[2] * nj[2]) > 0. ? 1 : 0;
+              sigmoid.weight_from_cosine(input.cosine(i, found[j].index)) > 0. ? 1 : 0;
             if(weights[j + 1] != w)
               same = false;
             weights[j + 1] = w;
@@ -448,7 +449,8 @@ filter_normals(PointRange& points, const CGAL_NP_CLASS& np = CGAL::parameters::d
   using CGAL::parameters::get_parameter_reference;
   using CGAL::parameters::is_default_parameter;
   const auto normal_map = NP_helper::get_normal_map(points, np);
-  auto input = internal::copy_oriented_points(points, NP_helper::get_const_point_map(points, np), normal_map);
+  auto input = internal::copy_oriented_points(points, NP_helper::get_const_point_map(points, np), normal_map,
+                                              internal::line_angles(np));
   const internal::Normal_filter_settings settings = internal::normal_filter_settings(np);
   Normal_filter_summary summary;
   if constexpr(!is_default_parameter<CGAL_NP_CLASS, internal_np::neighborhoods_t>::value)

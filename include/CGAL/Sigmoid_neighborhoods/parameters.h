@@ -57,6 +57,8 @@ CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(cut_off_angle_t, cut_off_angle)
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(fixed_k_t, fixed_k)
 // every algorithm: the threads of one call with `CGAL::Parallel_tag` (0: the OpenMP or TBB default)
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(number_of_threads_t, number_of_threads)
+// the search, the features, the evaluation and the filter: weights on the angle between normal lines
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(line_angles_t, line_angles)
 // estimate_normals()
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(normal_estimation_method_t, normal_estimation_method)
 // caller-computed neighborhoods in compressed rows (pgeof's `nn` / `nn_ptr`)

@@ -6,9 +6,12 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_ORIENTED_POINT_SET_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_ORIENTED_POINT_SET_H
 
+#include <CGAL/Sigmoid_neighborhoods/IO/Normal_options.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace CGAL {
@@ -32,12 +35,19 @@ struct Oriented_point_set
 
   std::vector<Point_3> points;   ///< distinct points, in input order
   std::vector<Vector_3> normals; ///< unit normals, one per point
-  bool is_mesh = false;                 ///< read from faces; normals are vertex normals
-  bool normals_estimated = false;       ///< the file had no normals: jet fitting + MST orientation
+  bool is_mesh = false;                 ///< read from faces; normals are vertex normals unless estimated
+  bool normals_estimated = false;       ///< estimated by `estimate_normals()` (`Normal_options`)
+  Normal_estimation_method estimation_method = DEFAULT_NORMAL_ESTIMATION_METHOD; ///< when estimated
+  unsigned int estimation_neighbors = 0;  ///< the `k` of the estimation and orientation, when estimated
+  Normal_orientation orientation = Normal_orientation::NONE; ///< of estimated normals
+  std::size_t orientation_components = 0; ///< the trees of `Normal_orientation::SPANNING_FOREST`
   std::size_t input_vertices = 0;       ///< vertices or points in the file
   std::size_t merged_duplicates = 0;    ///< merged into an earlier point at the same position
   std::size_t dropped_vertices = 0;     ///< mesh vertices without a face or with an undefined normal
-  std::size_t unoriented_normals = 0;   ///< estimated normals the MST could not reach (kept as estimated)
+  /// the k-nearest-neighbor rows of the estimation (`Normal_options::kept_neighbors`), for the named
+  /// parameters `neighbor_indices` and `neighbor_offsets` of the steps after; empty when none kept
+  std::vector<std::uint32_t> neighbor_indices;
+  std::vector<std::size_t> neighbor_offsets; ///< see `neighbor_indices`
 };
 
 } // namespace Sigmoid_neighborhoods

@@ -7,6 +7,7 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_READ_ORIENTED_POINT_SET_H
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/Normal_options.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/check_points.h>
@@ -26,13 +27,6 @@ namespace Sigmoid_neighborhoods {
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsIO
-  the number of neighbors of the normal estimation and orientation of `read_oriented_point_set()`
-  for point sets without normals (the value of CGAL's normal estimation examples).
-*/
-constexpr unsigned int DEFAULT_ESTIMATION_NEIGHBORS = 18;
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   \brief reads a mesh (OFF, PLY, OBJ, STL) or a point set (XYZ/PWN lines `x y z [nx ny nz]`,
   PLY with or without `nx ny nz`, OFF without faces) into distinct points with oriented unit normals,
   as SPEC §1 prescribes.
@@ -40,27 +34,34 @@ constexpr unsigned int DEFAULT_ESTIMATION_NEIGHBORS = 18;
   Meshes: one point per vertex that has a face, its normal from
   `Polygon_mesh_processing::compute_vertex_normals()` (inconsistent orientations are repaired by
   `orient_polygon_soup()` first); vertices at one position merged, the first kept.
-  Point sets: duplicates merged, the first kept; without normals, normals are estimated by jet
-  fitting and oriented by a minimum spanning tree over `estimation_neighbors` neighbors; with
-  `estimation_neighbors = 0` they are not estimated and `normals` comes back empty.
+  Point sets: duplicates merged, the first kept.
+  Normals, as `options` says: the file's, or estimated by `estimate_normals()` (PCA by default) on the
+  `options.neighbors` nearest points and oriented by `orient_normals_by_spanning_forest()` (every
+  connected component from its highest point) or towards a viewpoint, both steps on one
+  k-nearest-neighbor structure. With `Normal_source::AUTO`, a file without normals gets estimated ones,
+  or none when `options.neighbors` is 0 (`normals` then comes back empty).
 
   \param filename the file; its extension (any case) selects the format: `.off`, `.obj`, `.ply`,
   `.stl`, `.xyz` or `.pwn`
-  \param estimation_neighbors the number of neighbors of the normal estimation and orientation of
-  point sets without normals, 0 or at least 6 (jet fitting of degree 2 needs 6 points; smaller
-  values throw `std::invalid_argument`); 0 leaves them without normals
-  \return the points, their normals, and counts of merged, dropped and unoriented points
+  \param options where the normals come from and how they are estimated and oriented
+  \return the points, their normals, how they were obtained, counts of merged and dropped points
 
   \throws Input_error with a one-line message on anything unusable: a missing, unreadable or empty
   file, an unknown extension, a syntax error, non-finite coordinates, zero or non-finite normals,
-  no points.
+  no points, no normals with `Normal_source::FROM_FILE`, points on which no normal can be estimated
+  (too few, on a line, coincident).
+  \throws std::invalid_argument on options no file can satisfy: `options.neighbors` below what the
+  method needs (2 for PCA, 5 for jet fitting; 0 is allowed with `Normal_source::AUTO` only).
 */
-inline Oriented_point_set read_oriented_point_set(const std::string& filename,
-                                                  unsigned int estimation_neighbors = DEFAULT_ESTIMATION_NEIGHBORS)
+inline Oriented_point_set read_oriented_point_set(const std::string& filename, const Normal_options& options)
 {
-  if(estimation_neighbors != 0 && estimation_neighbors < internal::FEWEST_POINTS_TO_ESTIMATE_NORMALS)
-    throw std::invalid_argument("read_oriented_point_set: estimation_neighbors must be 0 or at least " +
-                                std::to_string(internal::FEWEST_POINTS_TO_ESTIMATE_NORMALS));
+  const bool may_skip_estimation = options.source == Normal_source::AUTO && options.neighbors == 0;
+  const unsigned int fewest = internal::fewest_estimation_neighbors(internal::estimation_method(options.source));
+  if(!may_skip_estimation && options.source != Normal_source::FROM_FILE && options.neighbors < fewest)
+    throw std::invalid_argument("read_oriented_point_set: the estimation needs at least " + std::to_string(fewest) +
+                                " neighbors" + (options.source == Normal_source::AUTO ? " (or 0: no estimation)" : "") +
+                                ", got " + std::to_string(options.neighbors));
+  const bool estimate_anyway = options.source == Normal_source::PCA || options.source == Normal_source::JET;
   const internal::Input_file file = internal::open_input_file(
     filename, {"off", "obj", "ply", "stl", "xyz", "pwn"}, ".off, .obj, .ply, .stl, .xyz or .pwn");
 
@@ -76,6 +77,8 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename,
     if(!soup.polygons.empty())
     {
       internal::mesh_to_points(soup, out);
+      if(estimate_anyway)
+        internal::estimate_normals(out, options);
       return out;
     }
     if(file.extension == "obj" || file.extension == "stl")
@@ -83,24 +86,35 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename,
     internal::read_points_without_faces(file, out.points, out.normals, has_normals); // OFF or PLY
   }
 
-  // A point set: checked, merged, normals estimated when it has none.
+  // A point set: checked, merged, normals estimated when asked or when it has none.
   out.input_vertices = out.points.size();
   if(out.points.empty())
     throw Input_error("no points in the file");
   internal::check_points_and_normals(out.points, out.normals, has_normals);
   internal::merge_duplicate_points(out, has_normals);
-  if(!has_normals && estimation_neighbors == 0)
+  if(!has_normals && options.source == Normal_source::FROM_FILE)
+    throw Input_error("the file has no normals");
+  if(!has_normals && may_skip_estimation)
   {
     out.normals.clear();
     return out;
   }
-  if(!has_normals)
-  {
-    if(out.points.size() < internal::FEWEST_POINTS_TO_ESTIMATE_NORMALS)
-      throw Input_error("too few distinct points (" + std::to_string(out.points.size()) + ") to estimate normals");
-    internal::estimate_normals(out, (std::min)(estimation_neighbors, unsigned(out.points.size() - 1)));
-  }
+  if(!has_normals || estimate_anyway)
+    internal::estimate_normals(out, options);
   return out;
+}
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  \brief `read_oriented_point_set(filename, options)` with `Normal_source::AUTO` and
+  `estimation_neighbors` neighbors (0: a file without normals comes back without normals).
+*/
+inline Oriented_point_set read_oriented_point_set(const std::string& filename,
+                                                  unsigned int estimation_neighbors = DEFAULT_ESTIMATION_NEIGHBORS)
+{
+  Normal_options options;
+  options.neighbors = estimation_neighbors;
+  return read_oriented_point_set(filename, options);
 }
 
 } // namespace Sigmoid_neighborhoods

@@ -53,7 +53,7 @@ public:
       const std::uint32_t index = neighbors[j - 1].index;
       const Double_point& q = input.points[index];
       m_offsets[j] = Eigen::Vector3d(q.x() - p.x(), q.y() - p.y(), q.z() - p.z());
-      m_angles[j] = normal_angle(n, input.normals[index]);
+      m_angles[j] = input.line_angles ? normal_line_angle(n, input.normals[index]) : normal_angle(n, input.normals[index]);
       m_largest_angle = (std::max)(m_largest_angle, m_angles[j]);
       m_squared_radius[j] = (std::max)(m_squared_radius[j - 1], m_offsets[j].squaredNorm());
     }

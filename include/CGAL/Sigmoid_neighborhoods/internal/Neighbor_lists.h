@@ -76,8 +76,10 @@ Neighbor_lists neighbor_lists(const Lists& lists, std::size_t n)
 
 // The caller's neighborhoods in compressed rows (random-access ranges), checked: `offsets` of size
 // n + 1, starting at 0, non-decreasing, ending at the size of `indices`. Copied once, into the result.
+// Checks the caller's compressed rows: n + 1 non-decreasing offsets from 0 to the number of
+// indices, every index in range and none its own row's point.
 template <typename Indices, typename Offsets>
-Neighbor_lists neighbor_lists(const Indices& indices, const Offsets& offsets, std::size_t n)
+void check_neighbor_rows(const Indices& indices, const Offsets& offsets, std::size_t n)
 {
   const auto index = std::begin(indices);
   const auto offset = std::begin(offsets);
@@ -92,24 +94,33 @@ Neighbor_lists neighbor_lists(const Indices& indices, const Offsets& offsets, st
   for(std::size_t i = 0; i < n; ++i)
     if(offset[i + 1] < offset[i])
       throw std::invalid_argument("the neighbor offsets must not decrease (at point " + std::to_string(i) + ")");
-  Neighbor_lists result;
-  result.offsets.reserve(n + 1);
-  result.indices.reserve(index_count);
   for(std::size_t i = 0; i < n; ++i)
-  {
-    struct Row
+    for(auto j = index + std::ptrdiff_t(offset[i]); j != index + std::ptrdiff_t(offset[i + 1]); ++j)
     {
-      decltype(index) b, e;
-      auto begin() const { return b; }
-      auto end() const { return e; }
-    };
-    append_checked_list(Row{index + std::ptrdiff_t(offset[i]), index + std::ptrdiff_t(offset[i + 1])}, i, n, result);
-  }
+      if(!index_in_range(*j, n))
+        throw std::invalid_argument("neighborhood of point " + std::to_string(i) + ": index " + std::to_string(*j) +
+                                    " is out of range (" + std::to_string(n) + " points)");
+      if(std::size_t(*j) == i)
+        throw std::invalid_argument("neighborhood of point " + std::to_string(i) + " contains the point itself");
+    }
+}
+
+// The caller's compressed rows, checked, as Neighbor_lists.
+template <typename Indices, typename Offsets>
+Neighbor_lists neighbor_lists(const Indices& indices, const Offsets& offsets, std::size_t n)
+{
+  check_neighbor_rows(indices, offsets, n);
+  Neighbor_lists result;
+  result.offsets.assign(std::begin(offsets), std::end(offsets));
+  result.indices.assign(std::begin(indices), std::end(indices));
   return result;
 }
 
-// The neighbor structure of one call: the caller's compressed rows (the named parameters
-// `neighbor_indices` and `neighbor_offsets`, both or neither), or the kd-tree.
+// Rows in the package's own types are read where they are (no copy); others are converted.
+template <typename Indices, typename Offsets>
+constexpr bool is_native_rows = std::is_same<Indices, std::vector<std::uint32_t>>::value &&
+                                std::is_same<Offsets, std::vector<std::size_t>>::value;
+
 template <typename NamedParameters>
 Neighbor_query neighbor_query(const std::vector<Double_point>& points, const NamedParameters& np)
 {
@@ -120,9 +131,29 @@ Neighbor_query neighbor_query(const std::vector<Double_point>& points, const Nam
   static_assert(has_indices == has_offsets, "neighbor_indices and neighbor_offsets are given together");
   if constexpr(has_indices)
   {
-    Neighbor_lists rows = neighbor_lists(get_parameter_reference(np, internal_np::neighbor_indices),
-                                         get_parameter_reference(np, internal_np::neighbor_offsets), points.size());
-    return Neighbor_query(points, std::move(rows.offsets), std::move(rows.indices));
+    // CGAL's packs hold copies, except of parameters given with std::cref(): those are read in place
+    decltype(auto) indices = get_parameter_reference(np, internal_np::neighbor_indices);
+    decltype(auto) offsets = get_parameter_reference(np, internal_np::neighbor_offsets);
+    typedef decltype(indices) Indices_reference;
+    typedef decltype(offsets) Offsets_reference;
+    constexpr bool native = is_native_rows<std::decay_t<Indices_reference>, std::decay_t<Offsets_reference>>;
+    if constexpr(native && std::is_lvalue_reference<Indices_reference>::value &&
+                 std::is_lvalue_reference<Offsets_reference>::value)
+    {
+      check_neighbor_rows(indices, offsets, points.size());
+      return Neighbor_query(points, offsets.data(), indices.data());
+    }
+    else if constexpr(native)
+    {
+      check_neighbor_rows(indices, offsets, points.size());
+      return Neighbor_query(points, std::vector<std::size_t>(std::move(offsets)),
+                            std::vector<std::uint32_t>(std::move(indices)));
+    }
+    else
+    {
+      Neighbor_lists rows = neighbor_lists(indices, offsets, points.size());
+      return Neighbor_query(points, std::move(rows.offsets), std::move(rows.indices));
+    }
   }
   else
     return Neighbor_query(points);

@@ -102,12 +102,21 @@ public:
       m_tree.build();
   }
 
-  // The caller's rows (checked by neighbor_lists()) instead of the tree: no tree is built.
+  // The caller's rows (checked by check_neighbor_rows()) instead of the tree: no tree is built.
   Neighbor_query(const std::vector<Double_point>& points, std::vector<std::size_t> offsets,
                  std::vector<std::uint32_t> indices)
-    : m_points(points), m_map{&points}, m_traits(m_map), m_tree(Splitter(), m_traits), m_offsets(std::move(offsets)),
-      m_indices(std::move(indices)), m_given(true)
+    : m_points(points), m_map{&points}, m_traits(m_map), m_tree(Splitter(), m_traits), m_own_offsets(std::move(offsets)),
+      m_own_indices(std::move(indices)), m_offsets(m_own_offsets.data()), m_indices(m_own_indices.data()), m_given(true)
   {}
+
+  // The same rows read where they are, without a copy: they must outlive the query.
+  Neighbor_query(const std::vector<Double_point>& points, const std::size_t* offsets, const std::uint32_t* indices)
+    : m_points(points), m_map{&points}, m_traits(m_map), m_tree(Splitter(), m_traits), m_offsets(offsets),
+      m_indices(indices), m_given(true)
+  {}
+
+  Neighbor_query(const Neighbor_query&) = delete;
+  Neighbor_query& operator=(const Neighbor_query&) = delete;
 
   // true when the neighborhoods are the caller's rows
   bool is_given() const { return m_given; }
@@ -186,8 +195,11 @@ private:
   Index_to_point_map m_map;
   Traits m_traits;
   Tree m_tree;
-  std::vector<std::size_t> m_offsets;
-  std::vector<std::uint32_t> m_indices;
+  // given rows: owned (converted from the caller's types) or the caller's own
+  std::vector<std::size_t> m_own_offsets;
+  std::vector<std::uint32_t> m_own_indices;
+  const std::size_t* m_offsets = nullptr;
+  const std::uint32_t* m_indices = nullptr;
   bool m_given = false;
 };
 

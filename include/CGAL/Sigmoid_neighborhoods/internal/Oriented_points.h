@@ -33,7 +33,17 @@ struct Oriented_points
 {
   std::vector<Double_point> points;
   std::vector<Eigen::Vector3d> normals;
+  // The weights' angle is the one between the normals' lines, arccos |n_i . n_j| (named parameter
+  // `line_angles`): for normals whose signs mean nothing.
+  bool line_angles = false;
   std::size_t size() const { return points.size(); }
+
+  // n_i . n_j, or its absolute value with line angles
+  double cosine(std::size_t i, std::size_t j) const
+  {
+    const double c = normals[i].dot(normals[j]);
+    return line_angles ? std::abs(c) : c;
+  }
 };
 
 // Beyond this, squared distances overflow.
@@ -93,9 +103,11 @@ struct is_range<T, std::void_t<decltype(std::begin(std::declval<const T&>())), d
 
 // Copies a point range through its maps, rejecting what the paper's features are undefined for.
 template <typename PointRange, typename PointMap, typename NormalMap>
-Oriented_points copy_oriented_points(const PointRange& range, PointMap point_map, NormalMap normal_map)
+Oriented_points copy_oriented_points(const PointRange& range, PointMap point_map, NormalMap normal_map,
+                                     bool line_angles = false)
 {
   Oriented_points result;
+  result.line_angles = line_angles;
   // reserved: growing by doubling would hold the old and the new buffer at once
   const auto size = std::distance(std::begin(range), std::end(range));
   result.points.reserve(std::size_t(size));

@@ -61,6 +61,13 @@ unsigned int number_of_threads(const NamedParameters& np)
   return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::number_of_threads), 0u);
 }
 
+// The named parameter `line_angles`, false (the paper's oriented angle) when absent.
+template <typename NamedParameters>
+bool line_angles(const NamedParameters& np)
+{
+  return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::line_angles), false);
+}
+
 template <typename NamedParameters>
 Search_settings search_settings(const NamedParameters& np)
 {

@@ -8,6 +8,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/Mesh_points_summary.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Oriented_points.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
 
 #include <CGAL/Sigmoid_neighborhoods/internal/merge_equal_positions.h>
 
@@ -66,6 +67,7 @@ Mesh_points mesh_points(const PolygonMesh& mesh, const NamedParameters& np)
     choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(CGAL::vertex_point, mesh));
   const auto index_map = CGAL::get_initialized_vertex_index_map(mesh, np);
   Mesh_points result;
+  result.input.line_angles = line_angles(np);
   std::size_t slots = 0;
   for(Vertex v : vertices(mesh))
   {

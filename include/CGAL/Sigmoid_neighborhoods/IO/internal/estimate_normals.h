@@ -7,19 +7,21 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_ESTIMATE_NORMALS_H
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/Normal_options.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_k_nearest_neighbors.h>
+#include <CGAL/Sigmoid_neighborhoods/concurrency.h>
+#include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
+#include <CGAL/Sigmoid_neighborhoods/orient_normals.h>
 
-#include <CGAL/jet_estimate_normals.h>
-#include <CGAL/mst_orient_normals.h>
 #include <CGAL/property_map.h>
-#include <CGAL/tags.h>
 
 #include <algorithm>
 #include <cstdint>
-#include <iterator>
+#include <functional>
+#include <numeric>
+#include <stdexcept>
 #include <string>
-#include <tuple>
 #include <vector>
 
 /// \cond SKIP_IN_MANUAL
@@ -27,51 +29,63 @@ namespace CGAL {
 namespace Sigmoid_neighborhoods {
 namespace internal {
 
-// CGAL's jet fitting of degree 2 needs 6 points (a precondition of `Monge_via_jet_fitting`).
-constexpr std::size_t FEWEST_POINTS_TO_ESTIMATE_NORMALS = 6;
-// Jet fitting divides by the square of the extent of a point's neighbors; below this extent it
-// underflows to 0, the least-squares matrix gets NaN, and Eigen 3.4's JacobiSVD, which leaves its
-// rank undefined on non-finite input, reads out of bounds (a crash found by fuzzing).
-constexpr double SMALLEST_NEIGHBORHOOD_EXTENT = 1e-150;
-
-// Refuses points whose `neighbors` nearest other points are too close for jet fitting.
-inline void check_neighborhood_extents(const std::vector<Oriented_point_set::Point_3>& input, unsigned int neighbors)
+inline Normal_estimation_method estimation_method(Normal_source source)
 {
-  std::vector<Double_point> points;
-  points.reserve(input.size());
-  for(const auto& p : input)
-    points.emplace_back(p.x(), p.y(), p.z());
-  const Neighbor_query query(points);
-  std::vector<Neighbor> found;
-  for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    // the farthest of the `neighbors` nearest other points, as CGAL's query finds them
-    query.query(std::uint32_t(i), neighbors, found);
-    if(found.empty() ||
-       !(found.back().squared_distance >= SMALLEST_NEIGHBORHOOD_EXTENT * SMALLEST_NEIGHBORHOOD_EXTENT))
-      throw Input_error("point " + std::to_string(i) + " and its " + std::to_string(neighbors) +
-                        " nearest points lie within 1e-150 of each other: too close to estimate normals");
-  }
+  return source == Normal_source::JET ? Normal_estimation_method::JET
+         : source == Normal_source::PCA ? Normal_estimation_method::PCA
+                                        : DEFAULT_NORMAL_ESTIMATION_METHOD;
 }
 
-// Jet fitting and MST orientation (CGAL's Point_set_processing_3), in input order.
-inline void estimate_normals(Oriented_point_set& out, unsigned int neighbors)
+// The fewest neighbors a fit of `method` takes (estimate_normals()'s precondition, degree 2 jets).
+inline unsigned int fewest_estimation_neighbors(Normal_estimation_method method)
 {
-  check_neighborhood_extents(out.points, neighbors);
-  typedef std::tuple<Oriented_point_set::Point_3, Oriented_point_set::Vector_3, std::size_t> Item;
-  std::vector<Item> items;
-  for(std::size_t i = 0; i < out.points.size(); ++i)
-    items.emplace_back(out.points[i], CGAL::NULL_VECTOR, i);
-  const auto np = CGAL::parameters::point_map(CGAL::Nth_of_tuple_property_map<0, Item>())
-                    .normal_map(CGAL::Nth_of_tuple_property_map<1, Item>());
-  CGAL::jet_estimate_normals<CGAL::Sequential_tag>(items, neighbors, np);
-  const auto unoriented = CGAL::mst_orient_normals(items, neighbors, np);
-  out.unoriented_normals = std::size_t(std::distance(unoriented, items.end()));
-  std::sort(items.begin(), items.end(), [](const Item& x, const Item& y) { return std::get<2>(x) < std::get<2>(y); });
-  out.normals.clear();
-  for(const Item& item : items)
-    out.normals.push_back(std::get<1>(item));
+  return method == Normal_estimation_method::PCA ? 2u : (DEFAULT_JET_DEGREE + 1) * (DEFAULT_JET_DEGREE + 2) / 2 - 1;
+}
+
+// Estimates and orients the normals of `out` on one k-nearest-neighbor structure, computed once
+// and shared by both steps (and kept for later ones when `o.kept_neighbors` asks for it).
+inline void estimate_normals(Oriented_point_set& out, const Normal_options& o)
+{
+  const Normal_estimation_method method = estimation_method(o.source);
+  const std::size_t n = out.points.size();
+  if(n < std::size_t(fewest_estimation_neighbors(method)) + 1)
+    throw Input_error("too few distinct points (" + std::to_string(n) + ") to estimate normals");
+  const unsigned int k = unsigned((std::min)(std::size_t(o.neighbors), n - 1));
+  const unsigned int rows = unsigned((std::min)(std::size_t((std::max)(o.neighbors, o.kept_neighbors)), n - 1));
+
+  std::vector<std::uint32_t> indices(n);
+  std::iota(indices.begin(), indices.end(), std::uint32_t(0));
+  out.normals.assign(n, CGAL::NULL_VECTOR);
+  const auto maps = parameters::number_of_threads(
+    o.threads, CGAL::parameters::point_map(CGAL::make_property_map(out.points)).normal_map(CGAL::make_property_map(out.normals)));
+  try
+  {
+    compute_k_nearest_neighbors<Parallel_if_available_tag>(indices, rows, out.neighbor_indices, out.neighbor_offsets, maps);
+    // read in place: CGAL's named parameters copy what they hold unless given a reference
+    const auto np = parameters::neighbor_indices(std::cref(out.neighbor_indices),
+                                                 parameters::neighbor_offsets(std::cref(out.neighbor_offsets), maps));
+    Sigmoid_neighborhoods::estimate_normals<Parallel_if_available_tag>(indices, k,
+                                                                       parameters::normal_estimation_method(method, np));
+    out.orientation_components = 0;
+    if(o.orientation == Normal_orientation::SPANNING_FOREST)
+      out.orientation_components = orient_normals_by_spanning_forest<Parallel_if_available_tag>(indices, k, np);
+    else if(o.orientation == Normal_orientation::VIEWPOINT)
+      orient_normals_towards_viewpoint(indices, o.viewpoint, maps);
+  }
+  catch(const std::invalid_argument& e)
+  {
+    // what the file's points cannot give: a line, coincident points (estimate_normals()'s checks)
+    throw Input_error(e.what());
+  }
   out.normals_estimated = true;
+  out.estimation_method = method;
+  out.estimation_neighbors = k;
+  out.orientation = o.orientation;
+  if(o.kept_neighbors == 0)
+  {
+    std::vector<std::uint32_t>().swap(out.neighbor_indices);
+    std::vector<std::size_t>().swap(out.neighbor_offsets);
+  }
 }
 
 } // namespace internal

@@ -1,0 +1,68 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_NORMAL_OPTIONS_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_IO_NORMAL_OPTIONS_H
+
+#include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Origin.h>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  the number of neighbors of the normal estimation and orientation of `read_oriented_point_set()`
+  for point sets without normals (the value of CGAL's normal estimation examples).
+*/
+constexpr unsigned int DEFAULT_ESTIMATION_NEIGHBORS = 18;
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  where the normals of `read_oriented_point_set()` come from.
+*/
+enum class Normal_source
+{
+  AUTO,      ///< the file's (a mesh's vertex normals, a point set's `nx ny nz`), estimated when it has none
+  FROM_FILE, ///< the file's; a file without normals is an error
+  PCA,       ///< estimated by `estimate_normals()` with `Normal_estimation_method::PCA`, the file's ignored
+  JET        ///< estimated by `estimate_normals()` with `Normal_estimation_method::JET`, the file's ignored
+};
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  how `read_oriented_point_set()` orients the normals it estimates.
+*/
+enum class Normal_orientation
+{
+  SPANNING_FOREST, ///< `orient_normals_by_spanning_forest()`: every connected component from its highest point
+  VIEWPOINT,       ///< `orient_normals_towards_viewpoint()`: every normal towards `Normal_options::viewpoint`
+  NONE             ///< as estimated: signs arbitrary (for the named parameter `line_angles`)
+};
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  the normals of `read_oriented_point_set()`: their source, the estimation and the orientation.
+*/
+struct Normal_options
+{
+  Normal_source source = Normal_source::AUTO; ///< where the normals come from
+  /// the `k` of the estimation and of the spanning forest; 0 with `Normal_source::AUTO`: a file without
+  /// normals comes back without normals
+  unsigned int neighbors = DEFAULT_ESTIMATION_NEIGHBORS;
+  Normal_orientation orientation = Normal_orientation::SPANNING_FOREST; ///< of estimated normals
+  Exact_predicates_inexact_constructions_kernel::Point_3 viewpoint = ORIGIN; ///< for `Normal_orientation::VIEWPOINT`
+  /// when normals are estimated, the k-nearest-neighbor rows of `max(neighbors, kept_neighbors)` are
+  /// kept in `Oriented_point_set::neighbor_indices` for the steps after (0: none kept)
+  unsigned int kept_neighbors = 0;
+  unsigned int threads = 0; ///< of the parallel estimation (0: the OpenMP or TBB default)
+};
+
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_NORMAL_OPTIONS_H
