@@ -8,10 +8,13 @@
 // at equal neighbor counts, each on one thread.
 //
 //   normal_estimation_benchmark [--points N] [--neighbors K] [--seed S] [--csv FILE] [MESH...]
+//   normal_estimation_benchmark --scaling SCAN [--threads T] [--neighbors K]
 //
 // Without meshes: the CAD models of CGAL's data (the `make corpus` copy) and of ../shared/data found
-// on this machine; missing ones are skipped.
+// on this machine; missing ones are skipped. --scaling times the steps of a raw scan's normals (the
+// neighbor rows, PCA, jet fitting, the spanning forest) on 1 and T threads (default 2), fastest of 3.
 
+#include <CGAL/Sigmoid_neighborhoods/compute_k_nearest_neighbors.h>
 #include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/orient_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
@@ -34,6 +37,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
+#include <numeric>
 #include <random>
 #include <string>
 #include <utility>
@@ -168,6 +173,53 @@ Accuracy timed(Points& points, const std::vector<Vector>& truth, const Run& run)
   return a;
 }
 
+// The fastest of three runs of `run()`, in seconds.
+template <typename Run>
+double fastest(const Run& run)
+{
+  double best = std::numeric_limits<double>::infinity();
+  for(int i = 0; i < 3; ++i)
+  {
+    CGAL::Real_timer timer;
+    timer.start();
+    run();
+    timer.stop();
+    best = std::min(best, timer.time());
+  }
+  return best;
+}
+
+int scaling(const std::string& file, unsigned int threads, unsigned int k)
+{
+  SN::Oriented_point_set scan = SN::read_oriented_point_set(file, 0);
+  std::vector<std::uint32_t> ids(scan.points.size());
+  std::iota(ids.begin(), ids.end(), 0u);
+  scan.normals.assign(scan.points.size(), Vector(0, 0, 1));
+  const auto maps = CGAL::parameters::point_map(CGAL::make_property_map(scan.points))
+                      .normal_map(CGAL::make_property_map(scan.normals));
+  std::vector<std::uint32_t> indices;
+  std::vector<std::size_t> offsets;
+  std::printf("%s: %zu points, k = %u\n\n| step | 1 thread (s) | %u threads (s) | parallel efficiency |\n|---|---:|---:|---:|\n",
+              file.c_str(), scan.points.size(), k, threads);
+  auto row = [&](const char* step, const auto& run) {
+    const double one = fastest([&] { run(1u); }), many = fastest([&] { run(threads); });
+    std::printf("| %s | %.3f | %.3f | %.0f %% |\n", step, one, many, 100. * one / (many * threads));
+  };
+  row("k-nearest-neighbor rows", [&](unsigned t) {
+    SN::compute_k_nearest_neighbors<SN::Parallel_if_available_tag>(ids, k, indices, offsets, SNP::number_of_threads(t, maps));
+  });
+  auto rows = [&](unsigned t) {
+    return SNP::neighbor_indices(std::cref(indices), SNP::neighbor_offsets(std::cref(offsets), SNP::number_of_threads(t, maps)));
+  };
+  row("pca", [&](unsigned t) { SN::estimate_normals<SN::Parallel_if_available_tag>(ids, k, rows(t)); });
+  row("jet fitting", [&](unsigned t) {
+    SN::estimate_normals<SN::Parallel_if_available_tag>(
+      ids, k, SNP::normal_estimation_method(SN::Normal_estimation_method::JET, rows(t)));
+  });
+  row("spanning forest", [&](unsigned t) { SN::orient_normals_by_spanning_forest<SN::Parallel_if_available_tag>(ids, k, rows(t)); });
+  return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -175,7 +227,8 @@ int main(int argc, char** argv)
   std::size_t n = 20000;
   unsigned int k = SN::DEFAULT_ESTIMATION_NEIGHBORS;
   unsigned seed = 1;
-  std::string csv;
+  std::string csv, scan;
+  unsigned int threads = 2;
   std::vector<std::string> meshes;
   for(int i = 1; i < argc; ++i)
   {
@@ -188,14 +241,21 @@ int main(int argc, char** argv)
       seed = unsigned(std::stoul(argv[++i]));
     else if(arg == "--csv" && i + 1 < argc)
       csv = argv[++i];
+    else if(arg == "--scaling" && i + 1 < argc)
+      scan = argv[++i];
+    else if(arg == "--threads" && i + 1 < argc)
+      threads = unsigned(std::stoul(argv[++i]));
     else if(!arg.empty() && arg[0] != '-')
       meshes.push_back(arg);
     else
     {
-      std::cerr << "usage: normal_estimation_benchmark [--points N] [--neighbors K] [--seed S] [--csv FILE] [MESH...]\n";
+      std::cerr << "usage: normal_estimation_benchmark [--points N] [--neighbors K] [--seed S] [--csv FILE] [MESH...]\n"
+                   "       normal_estimation_benchmark --scaling SCAN [--threads T] [--neighbors K]\n";
       return 2;
     }
   }
+  if(!scan.empty())
+    return scaling(scan, threads, k);
   if(meshes.empty())
     for(const std::string& m : DEFAULT_MESHES)
       if(std::filesystem::exists(m))
@@ -237,9 +297,11 @@ int main(int argc, char** argv)
       });
       add("CGAL jet + mst", mst, unoriented, 1);
       add("pca", timed(pca, s.truth, [&](Points& p) {
-        SN::estimate_normals<CGAL::Sequential_tag>(p, k, SNP::normal_estimation_method(SN::Normal_estimation_method::PCA, maps()));
+        SN::estimate_normals<CGAL::Sequential_tag>(p, k, maps()); // PCA, the default
       }), 0, 0);
-      add("jet", timed(jet, s.truth, [&](Points& p) { SN::estimate_normals<CGAL::Sequential_tag>(p, k, maps()); }), 0, 0);
+      add("jet", timed(jet, s.truth, [&](Points& p) {
+        SN::estimate_normals<CGAL::Sequential_tag>(p, k, SNP::normal_estimation_method(SN::Normal_estimation_method::JET, maps()));
+      }), 0, 0);
       for(auto method : {std::make_pair("pca + forest", &pca), std::make_pair("jet + forest", &jet)})
       {
         std::size_t trees = 0;

@@ -155,9 +155,9 @@ double normal_angle(const Vector& n, const Vector& m)
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
-  the angle in `[0, pi/2]` between the lines of two unit vectors, `acos |n . m|` clamped: the
-  weights' angle of the named parameter `line_angles`, for normals whose signs mean nothing
-  (`doc/specification.md`, "Line angles").
+  the angle between the lines of two unit vectors, in `[0, pi/2]`: the arc cosine of the absolute
+  value of their dot product, clamped to 1. It is the angle of the weights with the named parameter
+  `line_angles`, for normals whose signs mean nothing (see the specification, "Line angles").
 */
 template <typename Vector>
 double normal_line_angle(const Vector& n, const Vector& m)

@@ -235,9 +235,9 @@ std::size_t orient_normals_by_spanning_forest(PointRange& points, unsigned int k
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
-  \brief turns every normal of `points` towards `viewpoint`: `n_i` becomes `-n_i` where
-  `n_i . (viewpoint - p_i) < 0` (the scanner's position of a terrestrial scan). A normal
-  perpendicular to the line of sight is left as it is.
+  \brief turns every normal of `points` towards `viewpoint` (the position of the scanner of a
+  terrestrial scan): a normal `n` at `p` is reversed where its dot product with `viewpoint - p` is
+  negative. A normal perpendicular to the line of sight is left as it is.
 
   \param points the points
   \param viewpoint the position the normals face, a `Point_3` of a CGAL kernel
