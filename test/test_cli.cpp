@@ -162,8 +162,8 @@ TEST_CASE("CLI: a mesh gives one CSV row per vertex and a PLY with the same valu
   REQUIRE(CGAL::IO::read_point_set(ply, ps));
   REQUIRE(ps.size() == 152);
   CHECK(ps.has_normal_map());
-  auto error = ps.property_map<double>("error");
-  auto k = ps.property_map<int>("k");
+  auto error = ps.property_map<double>("scalar_error");
+  auto k = ps.property_map<int>("scalar_k");
   REQUIRE(error.second);
   REQUIRE(k.second);
   std::size_t i = 1;

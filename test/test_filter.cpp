@@ -10,6 +10,9 @@
 #include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/orient_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/Point_set_3.h>
+#include <CGAL/Point_set_3/IO.h>
+#include <sstream>
 #include <CGAL/Sigmoid_neighborhoods/compute_k_nearest_neighbors.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -793,4 +796,129 @@ TEST_CASE("line_angles: the search and the filter blind to the normals' signs", 
     const bool was_flipped = flipped[i].second != outward[i].second;
     CHECK(filtered_flipped[i].second == (was_flipped ? -filtered_outward[i].second : filtered_outward[i].second));
   }
+}
+
+namespace {
+
+typedef CGAL::Point_set_3<Point, Vector> Point_set;
+
+Point_set point_set_of(const Points& points, bool with_normals)
+{
+  Point_set ps(with_normals);
+  for(const auto& p : points)
+    if(with_normals)
+      ps.insert(p.first, p.second);
+    else
+      ps.insert(p.first);
+  return ps;
+}
+
+template <typename T>
+std::vector<T> property_values(const Point_set& ps, const std::string& name)
+{
+  const auto map = ps.property_map<T>(name);
+  REQUIRE(map.second);
+  std::vector<T> values;
+  for(const auto index : ps)
+    values.push_back(map.first[index]);
+  return values;
+}
+
+// Equal, NaN equal to NaN.
+bool same_values(const std::vector<double>& x, const std::vector<double>& y)
+{
+  if(x.size() != y.size())
+    return false;
+  for(std::size_t i = 0; i < x.size(); ++i)
+    if(!(x[i] == y[i] || (std::isnan(x[i]) && std::isnan(y[i]))))
+      return false;
+  return true;
+}
+
+} // namespace
+
+TEST_CASE("Point_set_3: the search, the features and the filter write its properties", "[point_set]")
+{
+  Points points = two_spheres(400, 8);
+  for(std::size_t i = 0; i < points.size(); ++i) // outward normals, a few flipped: some failures
+    if(points_inward(points, i, 400) != (i % 97 == 0))
+      points[i].second = -points[i].second;
+  Point_set ps = point_set_of(points, true);
+
+  std::vector<SN::Optimal_sigmoid_neighborhood> records;
+  SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(points, std::back_inserter(records), maps());
+  const std::size_t failures = SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(ps);
+  std::size_t expected_failures = 0;
+  std::vector<double> a, error, linearity;
+  std::vector<int> k;
+  for(const auto& r : records)
+  {
+    expected_failures += r.is_failure();
+    a.push_back(r.a);
+    error.push_back(r.error());
+    linearity.push_back(r.is_failure() ? std::nan("") : r.features.linearity);
+    k.push_back(int(r.k));
+  }
+  CHECK(failures == expected_failures);
+  CHECK(same_values(property_values<double>(ps, "scalar_a"), a));
+  CHECK(same_values(property_values<double>(ps, "scalar_error"), error));
+  CHECK(same_values(property_values<double>(ps, "scalar_linearity"), linearity));
+  CHECK(property_values<int>(ps, "scalar_k") == k);
+
+  // a binary PLY of the point set: CGAL reads every property back by its name
+  std::stringstream ply;
+  CGAL::IO::set_binary_mode(ply);
+  REQUIRE(CGAL::IO::write_PLY(ply, ps));
+  Point_set back;
+  REQUIRE(CGAL::IO::read_PLY(ply, back));
+  CHECK(same_values(property_values<double>(back, "scalar_error"), error));
+  CHECK(property_values<int>(back, "scalar_k") == k);
+  CHECK(property_values<std::uint8_t>(back, "scalar_label") == property_values<std::uint8_t>(ps, "scalar_label"));
+
+  // the features of one sigmoid replace the search's
+  std::vector<SN::Dimensionality_features> features;
+  const SN::Cosine_sigmoid sigmoid(0., CGAL_PI / 3.);
+  SN::compute_sigmoid_features<CGAL::Sequential_tag>(points, sigmoid, 12, std::back_inserter(features), maps());
+  SN::compute_sigmoid_features<CGAL::Sequential_tag>(ps, sigmoid, 12);
+  std::vector<double> feature_error;
+  for(const auto& f : features)
+    feature_error.push_back(f.error);
+  CHECK(same_values(property_values<double>(ps, "scalar_error"), feature_error));
+
+  // the filter, in place
+  Points filtered = points;
+  SN::filter_normals<CGAL::Sequential_tag>(
+    filtered, CGAL::parameters::number_of_iterations(3).point_map(Point_map()).normal_map(Normal_map()));
+  SN::filter_normals<CGAL::Sequential_tag>(ps, CGAL::parameters::number_of_iterations(3));
+  std::vector<Vector> ps_normals;
+  for(const auto index : ps)
+    ps_normals.push_back(ps.normal(index));
+  CHECK(ps_normals == normals_of(filtered));
+
+  // no normals; a property of the same name and another type
+  Point_set bare = point_set_of(points, false);
+  CHECK_THROWS_WITH(SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(bare),
+                    Catch::Contains("the point set has no normal map"));
+  Point_set other = point_set_of(points, true);
+  other.add_property_map<float>("scalar_b", 0.f);
+  CHECK_THROWS_WITH(SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(other),
+                    Catch::Contains("the point set has a property scalar_b of another type"));
+}
+
+TEST_CASE("Point_set_3: normals estimated and oriented on one neighbor structure", "[point_set][normals]")
+{
+  const int n_each = 800;
+  const Points points = two_spheres(n_each, 9);
+  Point_set ps = point_set_of(points, false);
+  CHECK(SN::estimate_and_orient_normals<CGAL::Sequential_tag>(ps, 12) == 2);
+  REQUIRE(ps.has_normal_map());
+  Points estimated;
+  for(const auto index : ps)
+    estimated.emplace_back(ps.point(index), ps.normal(index));
+  CHECK(inward_normals(estimated, n_each) == 0);
+  // as the range functions give them
+  Points range = points;
+  SN::estimate_normals<CGAL::Sequential_tag>(range, 12, maps());
+  SN::orient_normals_by_spanning_forest<CGAL::Sequential_tag>(range, 12, maps());
+  CHECK(normals_of(estimated) == normals_of(range));
 }

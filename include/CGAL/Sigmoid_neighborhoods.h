@@ -20,6 +20,7 @@
 #include <CGAL/Sigmoid_neighborhoods/compute_k_nearest_neighbors.h>
 #include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/orient_normals.h>
+#include <CGAL/Sigmoid_neighborhoods/Point_set_3.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_sigmoid_features.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/evaluate_sigmoid_neighborhoods.h>

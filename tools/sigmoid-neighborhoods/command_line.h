@@ -8,9 +8,11 @@
 #define SIGMOID_NEIGHBORHOODS_TOOL_COMMAND_LINE_H
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
+#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
 
 #include <CGAL/number_type_config.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -220,6 +222,50 @@ inline double read_angle_tolerance(const Arguments& args, double fallback)
   if(!(tolerance >= 0. && tolerance < CGAL_PI))
     throw Usage_error("--angle-tolerance must be in [0, pi)");
   return tolerance;
+}
+
+// An option of comma-separated angles in [0, pi]: radians (`1.5`, `pi`) or degrees (`30deg`),
+// sorted and deduplicated as the library does. Multiples of 30deg are the default grid's values
+// bit for bit, so that `0,30deg,...,180deg` is the default grid.
+inline std::vector<double> read_angle_list(const Arguments& args, const std::string& name,
+                                           const std::vector<double>& fallback)
+{
+  if(!args.has(name))
+    return fallback;
+  const std::string text = args.get(name);
+  if(text.empty())
+    throw Usage_error("option " + name + " needs at least one angle");
+  std::vector<double> angles;
+  std::size_t start = 0;
+  while(start <= text.size())
+  {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string word = text.substr(start, comma - start);
+    start = comma + 1;
+    const bool degrees = word.size() > 3 && word.compare(word.size() - 3, 3, "deg") == 0;
+    const std::string number = degrees ? word.substr(0, word.size() - 3) : word;
+    double v = 0.;
+    char* end = nullptr;
+    if(number == "pi")
+      v = degrees ? std::nan("") : CGAL_PI;
+    else
+      v = std::strtod(number.c_str(), &end);
+    if(number.empty() || (end != nullptr && *end != '\0') || std::isnan(v))
+      throw Usage_error("option " + name + " needs comma-separated angles in radians or degrees (0,30deg,pi), got '" +
+                        word + "'");
+    if(!(v >= 0. && v <= (degrees ? 180. : CGAL_PI)))
+      throw Usage_error("option " + name + ": " + word + " is not in [0, pi] (0 to 180deg)");
+    if(degrees)
+    {
+      const double step = v / 30.;
+      const std::vector<double> grid = CGAL::Sigmoid_neighborhoods::default_angle_grid();
+      v = step == std::floor(step) ? grid[std::size_t(step)] : v * CGAL_PI / 180.;
+    }
+    angles.push_back(v);
+  }
+  std::sort(angles.begin(), angles.end());
+  angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
+  return angles;
 }
 
 // Runs `read()`; a file it cannot use (Input_error) becomes a Usage_error that names `path`.

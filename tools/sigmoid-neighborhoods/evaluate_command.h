@@ -31,7 +31,8 @@ namespace sigmoid_tool {
 inline const char* EVALUATE_USAGE =
   "usage: sigmoid-neighborhoods evaluate INPUTS... -o OUTDIR [--repository NAME] [--shard I/N] [--threads N]\n"
   "         [--resume] [--per-point] [--only-with-normals] [--barycenter weighted|unweighted]\n"
-  "         [--k-min 6] [--k-max 20] [--fixed-k K_MAX] [--angle-tolerance 1e-6] [normals]\n"
+  "         [--k-min 6] [--k-max 20] [--fixed-k K_MAX] [--a-grid ANGLES] [--b-grid ANGLES]\n"
+  "         [--angle-tolerance 1e-6] [normals]\n"
   "  INPUTS: model files or folders (searched recursively for .off .obj .ply .stl .xyz .pwn)\n"
   "  --shard I/N: evaluate the I-th of N shares (1 <= I <= N), balanced by file size\n";
 
@@ -248,12 +249,13 @@ inline int run_evaluate(int argc, char** argv)
 {
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT,
                        with_normal_options({"-o", "--output", "--repository", "--shard", "--threads", "--barycenter",
-                                            "--k-min", "--k-max", "--fixed-k", "--angle-tolerance"}),
+                                            "--k-min", "--k-max", "--fixed-k", "--a-grid", "--b-grid",
+                                            "--angle-tolerance"}),
                        with_normal_flags({"-h", "--help", "--resume", "--per-point", "--only-with-normals"}),
                        NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, EVALUATE_USAGE))
   {
-    std::cout << NORMAL_USAGE;
+    std::cout << GRID_USAGE << NORMAL_USAGE;
     return EXIT_OK;
   }
   const std::string outdir = args.output();
@@ -271,7 +273,8 @@ inline int run_evaluate(int argc, char** argv)
   settings.barycenter = options.barycenter == SN::Barycenter::WEIGHTED ? "weighted" : "unweighted";
   settings.angle_tolerance = options.angle_tolerance;
   settings.cut_off_angle = std::acos(EVALUATION_CUT_OFF_COSINE);
-  settings.a_grid = settings.b_grid = SN::default_angle_grid();
+  settings.a_grid = options.a_grid; // sorted and deduplicated, as the statistics keep them
+  settings.b_grid = options.b_grid;
   const SN::Normal_options normal_options = read_normal_options(args);
   set_normal_settings(settings, normal_options, options.line_angles);
 

@@ -9,13 +9,12 @@
 
 #include "command_line.h"
 #include "optimal_command.h"
+#include "ply_output.h"
 
 #include <CGAL/Sigmoid_neighborhoods/filter_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 
-#include <CGAL/Point_set_3.h>
-#include <CGAL/Point_set_3/IO.h>
 #include <CGAL/Real_timer.h>
 
 #include <cstdint>
@@ -111,17 +110,15 @@ inline void write_filtered_xyz(std::ostream& out, const SN::Oriented_point_set& 
   }
 }
 
+// Positions and the filtered normals only: the filter has no per-point value to show.
 inline void write_filtered_ply(std::ostream& out, const SN::Oriented_point_set& model,
                                const std::vector<SN::Oriented_point_set::Vector_3>& normals)
 {
-  typedef CGAL::Point_set_3<SN::Oriented_point_set::Point_3, SN::Oriented_point_set::Vector_3> Point_set;
-  Point_set ps(true);
+  Ply_point_set ps(true);
   ps.reserve(normals.size());
   for(std::size_t i = 0; i < normals.size(); ++i)
     ps.insert(model.points[i], normals[i]);
-  CGAL::IO::set_binary_mode(out);
-  if(!CGAL::IO::write_PLY(out, ps))
-    throw Usage_error("cannot write the PLY file");
+  write_binary_ply(out, ps);
 }
 
 inline int run_filter_normals(int argc, char** argv)

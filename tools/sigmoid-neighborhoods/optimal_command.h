@@ -8,12 +8,11 @@
 
 #include "command_line.h"
 #include "model_input.h"
+#include "ply_output.h"
 
 #include <CGAL/Sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 
-#include <CGAL/Point_set_3.h>
-#include <CGAL/Point_set_3/IO.h>
 #include <CGAL/Real_timer.h>
 
 #include <cmath>
@@ -29,9 +28,17 @@ namespace sigmoid_tool {
 namespace SN = CGAL::Sigmoid_neighborhoods;
 
 inline const char* OPTIMAL_USAGE =
-  "usage: sigmoid-neighborhoods optimal INPUT -o OUT.csv [--ply OUT.ply] [--k-min 6] [--k-max 20]\n"
-  "         [--barycenter weighted|unweighted] [--angle-tolerance 1e-6] [--threads N] [normals]\n"
-  "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply; normals estimated when absent)\n";
+  "usage: sigmoid-neighborhoods optimal INPUT -o OUT.csv [--ply OUT.ply] [--color error|label|none]\n"
+  "         [--k-min 6] [--k-max 20] [--a-grid ANGLES] [--b-grid ANGLES] [--barycenter weighted|unweighted]\n"
+  "         [--angle-tolerance 1e-6] [--threads N] [normals]\n"
+  "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply; normals estimated when absent)\n"
+  "  --ply: a binary PLY point cloud: the CSV's columns as properties scalar_<column> (CloudCompare's\n"
+  "      scalar fields), quality = E_dim and red green blue (MeshLab)\n";
+
+inline const char* GRID_USAGE =
+  "  --a-grid, --b-grid: the search grids of a and b (default 0,30deg,60deg,...,180deg), comma-separated\n"
+  "      angles in [0, pi], radians (1.5, pi) or degrees (30deg); --a-grid pi --b-grid pi is the\n"
+  "      equal-weights search alone (the optimal k of Weinmann et al.)\n";
 
 struct Search_options
 {
@@ -40,6 +47,7 @@ struct Search_options
   double angle_tolerance = SN::DEFAULT_ANGLE_TOLERANCE;
   unsigned int threads = 0; // 0: OpenMP's default
   bool line_angles = false;
+  std::vector<double> a_grid = SN::default_angle_grid(), b_grid = SN::default_angle_grid();
 };
 
 inline Search_options read_search_options(const Arguments& args)
@@ -57,6 +65,10 @@ inline Search_options read_search_options(const Arguments& args)
   o.angle_tolerance = read_angle_tolerance(args, o.angle_tolerance);
   o.threads = read_threads(args);
   o.line_angles = read_line_angles(args);
+  o.a_grid = read_angle_list(args, "--a-grid", o.a_grid);
+  o.b_grid = read_angle_list(args, "--b-grid", o.b_grid);
+  if(o.a_grid.front() > o.b_grid.back())
+    throw Usage_error("--a-grid and --b-grid have no pair with a <= b");
   return o;
 }
 
@@ -73,7 +85,8 @@ auto with_search_options(const Search_options& o, const NamedParameters& np)
 {
   namespace SNP = SN::parameters;
   return SNP::line_angles(o.line_angles, SNP::number_of_threads(o.threads, SNP::k_min(o.k_min, SNP::k_max(o.k_max,
-    SNP::barycenter(o.barycenter, SNP::angle_tolerance(o.angle_tolerance, np))))));
+    SNP::a_grid(o.a_grid, SNP::b_grid(o.b_grid,
+      SNP::barycenter(o.barycenter, SNP::angle_tolerance(o.angle_tolerance, np))))))));
 }
 
 // Runs `search(np)` with the model's maps and the search options, and with the model's neighbor
@@ -151,22 +164,23 @@ inline void write_optimal_csv(std::ostream& out, const SN::Oriented_point_set& m
   }
 }
 
-// A binary PLY point cloud with the CSV's values as per-vertex properties (MeshLab, CloudCompare).
-// Failures have NaN a, b and features, k = 0 and error = inf; label: 0 linear, 1 planar,
-// 2 scattered, 3 degenerate.
+// A binary PLY point cloud with the CSV's columns as per-vertex properties `scalar_<column>` (a, b
+// and the features double, k and k_equal int, label uchar: 0 linear, 1 planar, 2 scattered,
+// 3 degenerate; a failure has NaN a, b and features, k = 0 and error = inf), then `quality` and the
+// colors of `colors` for the viewers without scalar fields.
 inline void write_optimal_ply(std::ostream& out, const SN::Oriented_point_set& model,
-                              const std::vector<SN::Optimal_sigmoid_neighborhood>& records)
+                              const std::vector<SN::Optimal_sigmoid_neighborhood>& records, Ply_colors colors)
 {
-  typedef CGAL::Point_set_3<SN::Oriented_point_set::Point_3, SN::Oriented_point_set::Vector_3> Point_set;
-  Point_set ps(true);
+  Ply_point_set ps(true);
   ps.reserve(records.size());
-  auto add_double = [&ps](const char* name) { return ps.add_property_map<double>(name, 0.).first; };
-  auto a = add_double("a"), b = add_double("b"), error = add_double("error");
-  auto linearity = add_double("linearity"), planarity = add_double("planarity"),
-       scattering = add_double("scattering"), error_equal = add_double("error_equal");
-  auto k = ps.add_property_map<std::int32_t>("k", 0).first;
-  auto k_equal = ps.add_property_map<std::int32_t>("k_equal", 0).first;
-  auto label = ps.add_property_map<std::uint8_t>("label", 0).first;
+  auto a = add_ply_scalar<double>(ps, "a"), b = add_ply_scalar<double>(ps, "b");
+  auto k = add_ply_scalar<std::int32_t>(ps, "k");
+  auto error = add_ply_scalar<double>(ps, "error"), linearity = add_ply_scalar<double>(ps, "linearity"),
+       planarity = add_ply_scalar<double>(ps, "planarity"), scattering = add_ply_scalar<double>(ps, "scattering");
+  auto label = add_ply_scalar<std::uint8_t>(ps, "label");
+  auto error_equal = add_ply_scalar<double>(ps, "error_equal");
+  auto k_equal = add_ply_scalar<std::int32_t>(ps, "k_equal");
+  Ply_viewer_properties viewer(ps, colors);
   const double nan = std::numeric_limits<double>::quiet_NaN();
   for(std::size_t i = 0; i < records.size(); ++i)
   {
@@ -182,21 +196,20 @@ inline void write_optimal_ply(std::ostream& out, const SN::Oriented_point_set& m
     label[*it] = std::uint8_t(r.features.label);
     error_equal[*it] = r.error_equal;
     k_equal[*it] = std::int32_t(r.k_equal);
+    viewer.set(*it, r.error(), r.features.label);
   }
-  CGAL::IO::set_binary_mode(out);
-  if(!CGAL::IO::write_PLY(out, ps))
-    throw Usage_error("cannot write the PLY file");
+  write_binary_ply(out, ps);
 }
 
 inline int run_optimal(int argc, char** argv)
 {
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT,
-                       with_normal_options({"-o", "--output", "--ply", "--k-min", "--k-max", "--barycenter",
-                                            "--angle-tolerance", "--threads"}),
+                       with_normal_options({"-o", "--output", "--ply", "--color", "--k-min", "--k-max", "--a-grid",
+                                            "--b-grid", "--barycenter", "--angle-tolerance", "--threads"}),
                        with_normal_flags({"-h", "--help"}), NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, OPTIMAL_USAGE))
   {
-    std::cout << NORMAL_USAGE;
+    std::cout << GRID_USAGE << COLOR_USAGE << NORMAL_USAGE;
     return EXIT_OK;
   }
   const auto input_and_output = one_input_and_output(args, "optimal", "OUT.csv");
@@ -204,6 +217,7 @@ inline int run_optimal(int argc, char** argv)
   const std::string& csv = input_and_output.second;
   const std::string ply = args.get("--ply");
   const Search_options options = read_search_options(args);
+  const Ply_colors colors = read_ply_colors(args);
   const SN::Normal_options normal_options = read_normal_options(args);
 
   CGAL::Real_timer timer;
@@ -217,7 +231,7 @@ inline int run_optimal(int argc, char** argv)
 
   write_file_atomically(csv, [&](std::ofstream& out) { write_optimal_csv(out, model, records); });
   if(!ply.empty())
-    write_file_atomically(ply, [&](std::ofstream& out) { write_optimal_ply(out, model, records); }, true);
+    write_file_atomically(ply, [&](std::ofstream& out) { write_optimal_ply(out, model, records, colors); }, true);
   timer.stop();
   char seconds[32];
   std::snprintf(seconds, sizeof(seconds), "%.2f", timer.time());

@@ -207,15 +207,17 @@ inline int run_report(int argc, char** argv)
     Search_options options = read_search_options(args);
     const Json& settings_tree = repos.front().tree;
     Evaluation_settings settings;
-    if(repos.front().evaluated())
-      settings = read_settings(settings_tree);
-    settings.cut_off_angle = std::acos(EVALUATION_CUT_OFF_COSINE);
     settings.a_grid = settings.b_grid = SN::default_angle_grid();
+    if(repos.front().evaluated())
+      settings = read_settings(settings_tree); // its grids too: the figure is of the evaluation's search
+    settings.cut_off_angle = std::acos(EVALUATION_CUT_OFF_COSINE);
     options.k_min = settings.k_min;
     options.k_max = settings.k_max;
     options.barycenter = settings.barycenter == "unweighted" ? SN::Barycenter::UNWEIGHTED : SN::Barycenter::WEIGHTED;
     options.angle_tolerance = settings.angle_tolerance;
     options.line_angles = settings.line_angles;
+    options.a_grid = settings.a_grid;
+    options.b_grid = settings.b_grid;
     const SN::Normal_options normals = normal_options(settings, options.threads);
     const SN::Oriented_point_set model =
       read_input(model_path, [&] { return read_model(model_path, options.k_max, normals); });
