@@ -12,11 +12,13 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 DEBIAN_PACKAGES = g++ make cmake ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev \
                   libgmp-dev libmpfr-dev libtbb-dev catch2 python3-matplotlib python3-numpy doxygen parallel
+# Only for `make test`: the viewer test opens the tool's PLY files in CloudCompare (headless).
+TEST_PACKAGES = cloudcompare
 CGAL_DATA_ARCHIVE = /usr/share/doc/libcgal-dev/data.tar.gz
 CORPUS_DIR = $(BUILD_DIR)/cgal-data
 TOOL = $(BUILD_DIR)/tools/sigmoid-neighborhoods/sigmoid-neighborhoods
 
-.PHONY: all deps configure build doc test sanitize fuzz evaluate corpus clean
+.PHONY: all deps test-deps configure build doc test sanitize fuzz evaluate corpus clean
 
 all: build
 
@@ -53,7 +55,10 @@ doc: deps
 	fi
 	@echo "Manual: $(DOC_DIR)/html/index.html (0 doxygen warnings)"
 
-test: build doc
+test-deps:
+	@$(MAKE) --no-print-directory deps DEBIAN_PACKAGES="$(TEST_PACKAGES)"
+
+test: build doc test-deps
 	cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
 # The test suite built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own folder.
@@ -78,10 +83,11 @@ fuzz: deps
 	cmake --build $(FUZZ_DIR) --target fuzz_read_and_optimal -j $(JOBS)
 	@mkdir -p $(FUZZ_DIR)/corpus $(FUZZ_DIR)/artifacts $(FUZZ_DIR)/tmp && rm -f $(FUZZ_DIR)/tmp/*
 	cp test/fuzz/seeds/* $(FUZZ_DIR)/corpus/
-	TMPDIR=$(CURDIR)/$(FUZZ_DIR)/tmp \
+	TMPDIR=$(CURDIR)/$(FUZZ_DIR)/tmp ASAN_OPTIONS=quarantine_size_mb=64 \
 	UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:suppressions=$(CURDIR)/test/fuzz/ubsan_suppressions.txt \
 	  $(FUZZ_DIR)/test/fuzz/fuzz_read_and_optimal $(FUZZ_DIR)/corpus -max_total_time=$(FUZZ_SECONDS) \
-	  -max_len=65536 -timeout=10 -rss_limit_mb=4096 -artifact_prefix=$(CURDIR)/$(FUZZ_DIR)/artifacts/ -print_final_stats=1
+	  -max_len=1048576 -timeout=10 -rss_limit_mb=512 -malloc_limit_mb=256 -artifact_prefix=$(CURDIR)/$(FUZZ_DIR)/artifacts/ \
+	  -print_final_stats=1
 
 # The embedded default corpus: the public data of Debian's libcgal-demo.
 corpus: deps

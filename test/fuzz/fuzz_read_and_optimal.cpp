@@ -14,9 +14,10 @@
 // The other bytes are written to a file with that extension (the reader takes a file name).
 //
 // Expected outcomes: success, `Input_error` from the reader (bad input, as the command's exit
-// code 2). Findings: a crash, a sanitizer report, a hang, any other exception (an uncaught one
-// aborts), and a broken postcondition of the search checked below, std::invalid_argument from the
-// search included: the reader promises points and normals that the search accepts.
+// code 2). Findings: a crash, a sanitizer report, a hang, an allocation over libFuzzer's
+// -malloc_limit_mb or a peak over its -rss_limit_mb, any other exception (an uncaught one aborts),
+// and a broken postcondition of the search checked below, std::invalid_argument from the search
+// included: the reader promises points and normals that the search accepts.
 //
 // Built with SIGMOID_NEIGHBORHOODS_LIBFUZZER (clang, -fsanitize=fuzzer) this is the fuzzer;
 // without it, a `main` replays the files and folders given on the command line (ctest).
@@ -46,9 +47,11 @@ namespace {
 
 namespace SN = CGAL::Sigmoid_neighborhoods;
 
-// Bounds that keep one run well below a second under sanitizers.
-constexpr std::size_t MAX_INPUT_BYTES = 64 * 1024; // selector byte excluded
-constexpr std::size_t MAX_SEARCH_POINTS = 512;     // the search runs on the first points only
+// Inputs up to the size of the bound on memory and time (no file under 1 MiB may make the
+// reader use more than 256 MiB: run with -rss_limit_mb=512 -malloc_limit_mb=256, as `make fuzz`
+// does); the search on few points keeps one run well below a second under sanitizers.
+constexpr std::size_t MAX_INPUT_BYTES = 1024 * 1024; // selector byte excluded
+constexpr std::size_t MAX_SEARCH_POINTS = 512;       // the search runs on the first points only
 
 const char* const EXTENSIONS[] = {"off", "obj", "ply", "stl", "xyz", "pwn"};
 constexpr unsigned int NUMBER_OF_FORMATS = 6;

@@ -12,10 +12,15 @@
 
 #include <exception>
 #include <iostream>
+#include <new>
 #include <string>
 #include <utility>
 
 namespace {
+
+// The exit code of a command that ran out of memory (std::bad_alloc, the address space limit of
+// `ulimit -v` or of a cluster job included): one line on stderr and, as on any failure, no output file.
+constexpr int EXIT_OUT_OF_MEMORY = 3;
 
 const char* USAGE =
   "usage: sigmoid-neighborhoods COMMAND [ARGS]\n"
@@ -26,7 +31,8 @@ const char* USAGE =
   "  report    Tables 2 and 3 (Markdown) and Figures 3-6 (PNG) of evaluation folders\n"
   "  filter-normals      the normal filter of Yadav et al. 2018, optionally with adaptive neighborhood sizes\n"
   "  denoise-experiment  the paper's Table 4: normal MSE of noisy, filtered and adaptively filtered normals\n"
-  "run 'sigmoid-neighborhoods COMMAND --help' for the options of a command\n";
+  "run 'sigmoid-neighborhoods COMMAND --help' for the options of a command\n"
+  "exit codes: 0 done, 1 internal error, 2 bad usage or unusable input, 3 out of memory\n";
 
 // The one line of a command that fails, and its exit code.
 int fail(const std::string& command, const std::string& message, int exit_code)
@@ -65,6 +71,6 @@ int main(int argc, char** argv)
   }
   catch(const Usage_error& e) { return fail(command, e.what(), EXIT_BAD_INPUT); }
   catch(const std::invalid_argument& e) { return fail(command, e.what(), EXIT_BAD_INPUT); }
-  catch(const std::bad_alloc&) { return fail(command, "out of memory", EXIT_FAILED); }
+  catch(const std::bad_alloc&) { return fail(command, "out of memory while running " + command, EXIT_OUT_OF_MEMORY); }
   catch(const std::exception& e) { return fail(command, std::string("internal error: ") + e.what(), EXIT_FAILED); }
 }

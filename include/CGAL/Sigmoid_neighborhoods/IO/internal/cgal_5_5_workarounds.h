@@ -4,17 +4,18 @@
 // Author(s): Sigmoid_neighborhoods contributors
 //
 // What CGAL 5.5's readers need around them to read untrusted files: their explanations on
-// std::cerr kept for a one-line message, and the header checks that they leave out (found by
-// fuzzing). The OFF loop that replaces `CGAL::IO::read_OFF()` is in read_off.h.
+// std::cerr kept for a one-line message, and the PLY header checks that they leave out (found by
+// fuzzing). The counts of every format are bounded by the bytes left (Byte_budget.h): the OFF loop
+// that replaces `CGAL::IO::read_OFF()` in read_off.h, check_ply_counts.h, read_stl.h.
 
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_CGAL_5_5_WORKAROUNDS_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_CGAL_5_5_WORKAROUNDS_H
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
 
-#include <cstdint>
 #include <fstream>
 #include <iostream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -51,29 +52,27 @@ private:
   std::streambuf* m_old;
 };
 
-// CGAL's readers trust the counts of a header: `read_OFF()` resizes its vectors to them and
-// `read_PLY()` loops over them, so a header of a few bytes could ask for gigabytes or hours (found
-// by fuzzing). Every vertex, face or PLY element item takes at least one byte of the file.
-inline void check_header_count(std::uintmax_t count, std::uintmax_t file_size, const std::string& what)
-{
-  if(count > file_size)
-    throw Input_error("the header announces " + std::to_string(count) + " " + what + ", more than a file of " +
-                      std::to_string(file_size) + " bytes can hold");
-}
+// The most vertex properties of a PLY point set: CGAL's point set reader looks every property of
+// every vertex up by name among all of them, a time quadratic in their number (a header of 20,000
+// one-byte properties and 20 vertices, 0.8 MB, took 30 s). Real point sets have a few dozen (a 3D
+// Gaussian splat has 62).
+constexpr std::size_t MAX_POINT_SET_PROPERTIES = 256;
 
-// Besides the counts, header contents that CGAL 5.5's PLY reader does not check (crashes, found by
-// fuzzing): a `property` line before any `element` line (it takes the back() of an empty vector),
-// and vertex properties of another type than it reads them as (it dereferences a failed
-// dynamic_cast): `x y z` as float or double, and, in a point set (no faces), which CGAL reads all as
-// float when one of `x y z` is float, `nx ny nz` as float then; a point set also looks its other
-// properties up by name, cut at a NUL byte, so vertex property names must be distinct and without NUL.
-inline void check_ply_header(const std::string& filename, std::uintmax_t file_size)
+// Header contents that CGAL 5.5's PLY reader does not check (crashes, found by fuzzing), besides
+// the counts (check_ply_counts.h): a `property` line before any `element` line (it takes the back()
+// of an empty vector), and vertex properties of another type than it reads them as (it dereferences
+// a failed dynamic_cast): `x y z` as float or double, and, in a point set (no faces), which CGAL
+// reads all as float when one of `x y z` is float, `nx ny nz` as float then; a point set also looks
+// its other properties up by name, cut at a NUL byte, so vertex property names must be distinct and
+// without NUL, and at most MAX_POINT_SET_PROPERTIES.
+inline void check_ply_header(const std::string& filename)
 {
   // The first two lines are the signature and the format, which CGAL checks.
   constexpr std::size_t LINES_CHECKED_BY_CGAL = 2;
   std::ifstream in(filename, std::ios::binary);
   std::string line, element;
   std::vector<std::pair<std::string, std::string>> vertex_properties; // (name, type)
+  std::set<std::string> vertex_property_names;
   bool has_faces = false, float_point = false;
   for(std::size_t line_number = 1; std::getline(in, line); ++line_number)
   {
@@ -86,8 +85,7 @@ inline void check_ply_header(const std::string& filename, std::uintmax_t file_si
     if(keyword == "element")
     {
       std::size_t items = 0; // read as CGAL reads it
-      if(tokens >> element >> items)
-        check_header_count(items, file_size, "items of element '" + element + "'");
+      tokens >> element >> items;
       has_faces = has_faces || ((element == "face" || element == "faces") && items > 0);
     }
     else if(keyword == "property")
@@ -100,16 +98,17 @@ inline void check_ply_header(const std::string& filename, std::uintmax_t file_si
       {
         if(type == "list" && !(tokens >> name >> name))
           continue; // `list SIZE_TYPE INDEX_TYPE NAME`; CGAL refuses the line
-        bool repeated = name.find('\0') != std::string::npos;
-        for(const auto& property : vertex_properties)
-          repeated = repeated || property.first == name;
-        if(repeated)
+        if(name.find('\0') != std::string::npos || !vertex_property_names.insert(name).second)
           throw Input_error("cannot parse the file as ply (vertex property '" + name.substr(0, name.find('\0')) +
                             "' given twice or with a NUL byte, line " + std::to_string(line_number) + ")");
         vertex_properties.emplace_back(name, type);
       }
     }
   }
+  if(!has_faces && vertex_properties.size() > MAX_POINT_SET_PROPERTIES)
+    throw Input_error("cannot parse the file as ply (a point set of " + std::to_string(vertex_properties.size()) +
+                      " properties per vertex, more than " + std::to_string(MAX_POINT_SET_PROPERTIES) +
+                      ": CGAL's reader takes a time quadratic in their number)");
   auto is_float = [](const std::string& type) { return type == "float" || type == "float32"; };
   for(const auto& property : vertex_properties)
     if(property.first == "x" || property.first == "y" || property.first == "z")

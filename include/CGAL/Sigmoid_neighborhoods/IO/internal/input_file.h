@@ -23,7 +23,7 @@ namespace Sigmoid_neighborhoods {
 namespace internal {
 
 // A file about to be read: its name, its format (the lower-case extension) and its size, which
-// bounds what a header may announce (check_header_count()).
+// bounds every count the file announces (Byte_budget).
 struct Input_file
 {
   std::string name;

@@ -8,6 +8,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/Polygon_soup.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/cgal_5_5_workarounds.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/check_ply_counts.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/input_file.h>
 
 #include <CGAL/IO/PLY.h>
@@ -20,10 +21,12 @@ namespace Sigmoid_neighborhoods {
 namespace internal {
 
 // The polygon soup of a PLY file (no faces: a point set, read by read_points_without_faces()):
-// CGAL's reader behind the header checks it needs (check_ply_header()).
+// CGAL's reader behind the checks it needs, of the header (check_ply_header()) and of every count
+// (check_ply_counts()).
 inline bool read_ply_soup(const Input_file& file, Polygon_soup& soup)
 {
-  check_ply_header(file.name, file.size);
+  check_ply_header(file.name);
+  check_ply_counts(file);
   return CGAL::IO::read_PLY(file.name, soup.points, soup.polygons);
 }
 

@@ -13,9 +13,9 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/input_file.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_off.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_ply.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_stl.h>
 
 #include <CGAL/IO/OBJ.h>
-#include <CGAL/IO/STL.h>
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO.h>
 
@@ -43,7 +43,7 @@ inline void read_polygon_soup(const Input_file& file, Polygon_soup& soup)
     else if(ext == "obj")
       read = CGAL::IO::read_OBJ(file.name, soup.points, soup.polygons);
     else if(ext == "stl")
-      read = CGAL::IO::read_STL(file.name, soup.points, soup.polygons);
+      read = read_stl_soup(file, soup);
     reason = captured.first_line();
   }
   if(!read)
