@@ -121,6 +121,21 @@ inline Eigen::Vector3d jet_normal(const std::vector<Double_point>& points, std::
   return normal;
 }
 
+// Writes one unit normal per item of `points` through the normal map of `np`.
+template <typename PointRange, typename NamedParameters>
+void write_normals(PointRange& points, const std::vector<Eigen::Vector3d>& normals, const NamedParameters& np)
+{
+  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
+  typedef typename boost::property_traits<typename NP_helper::Normal_map>::value_type Vector;
+  const auto normal_map = NP_helper::get_normal_map(points, np);
+  std::size_t i = 0;
+  for(auto& item : points)
+  {
+    const Eigen::Vector3d& n = normals[i++];
+    put(normal_map, item, Vector(n[0], n[1], n[2]));
+  }
+}
+
 } // namespace internal
 /// \endcond
 
@@ -220,14 +235,7 @@ void estimate_normals(PointRange& points, unsigned int k, const CGAL_NP_CLASS& n
                      : internal::jet_normal(copy, static_cast<std::uint32_t>(i), degree, s);
     });
 
-  typedef typename boost::property_traits<typename NP_helper::Normal_map>::value_type Vector;
-  const auto normal_map = NP_helper::get_normal_map(points, np);
-  std::size_t i = 0;
-  for(auto& item : points)
-  {
-    const Eigen::Vector3d& n = normals[i++];
-    put(normal_map, item, Vector(n[0], n[1], n[2]));
-  }
+  internal::write_normals(points, normals, np);
 }
 
 } // namespace Sigmoid_neighborhoods

@@ -6,6 +6,7 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_ORIENT_NORMALS_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_ORIENT_NORMALS_H
 
+#include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
@@ -158,20 +159,6 @@ Oriented_points checked_oriented_points(const PointRange& points, const NamedPar
   static_assert(NP_helper::has_normal_map(), "orienting normals needs a normal map");
   return copy_oriented_points(points, NP_helper::get_const_point_map(points, np),
                               NP_helper::get_normal_map(points, np));
-}
-
-template <typename PointRange, typename NamedParameters>
-void write_normals(PointRange& points, const std::vector<Eigen::Vector3d>& normals, const NamedParameters& np)
-{
-  typedef Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
-  typedef typename boost::property_traits<typename NP_helper::Normal_map>::value_type Vector;
-  const auto normal_map = NP_helper::get_normal_map(points, np);
-  std::size_t i = 0;
-  for(auto& item : points)
-  {
-    const Eigen::Vector3d& n = normals[i++];
-    put(normal_map, item, Vector(n[0], n[1], n[2]));
-  }
 }
 
 } // namespace internal
