@@ -26,6 +26,7 @@
 #include <CGAL/Sigmoid_neighborhoods/evaluate_sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>
 #include <CGAL/Sigmoid_neighborhoods/filter_normals.h>
+#include <CGAL/Sigmoid_neighborhoods/denoise_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/denoising_utilities.h>
 #include <CGAL/Sigmoid_neighborhoods/subdivided_polyhedra.h>
 

@@ -9,6 +9,7 @@
 #include "report_command.h"
 #include "filter_command.h"
 #include "denoise_command.h"
+#include "denoising_commands.h"
 
 #include <exception>
 #include <iostream>
@@ -31,6 +32,8 @@ const char* USAGE =
   "  report    Tables 2 and 3 (Markdown) and Figures 3-6 (PNG) of evaluation folders\n"
   "  filter-normals      the normal filter of Yadav et al. 2018, optionally with adaptive neighborhood sizes\n"
   "  denoise-experiment  the paper's Table 4: normal MSE of noisy, filtered and adaptively filtered normals\n"
+  "  denoise   Yadav et al. 2018's three-stage denoising of a point set or a mesh's vertices\n"
+  "  denoise-comparison  the denoiser against CGAL's jet and bilateral smoothing on noisy CAD models\n"
   "run 'sigmoid-neighborhoods COMMAND --help' for the options of a command\n"
   "exit codes: 0 done, 1 internal error, 2 bad usage or unusable input, 3 out of memory\n";
 
@@ -57,7 +60,8 @@ int main(int argc, char** argv)
     typedef int (*Run)(int, char**);
     const std::pair<const char*, Run> commands[] = {
       {"optimal", run_optimal}, {"evaluate", run_evaluate}, {"merge", run_merge}, {"report", run_report},
-      {"filter-normals", run_filter_normals}, {"denoise-experiment", run_denoise_experiment}};
+      {"filter-normals", run_filter_normals}, {"denoise-experiment", run_denoise_experiment},
+      {"denoise", run_denoise}, {"denoise-comparison", run_denoise_comparison_command}};
     for(const auto& c : commands)
       if(command == c.first)
         return c.second(argc, argv);

@@ -10,6 +10,7 @@
 #include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_sigmoid_features.h>
 #include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
+#include <CGAL/Sigmoid_neighborhoods/denoise_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/filter_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/orient_normals.h>
 
@@ -189,6 +190,21 @@ Normal_filter_summary filter_normals(CGAL::Point_set_3<Point, Vector>& points,
   internal::require_normal_map(points, "filter_normals");
   auto indices = internal::point_set_indices(points);
   return filter_normals<ConcurrencyTag>(indices, internal::with_point_set_maps(points, np));
+}
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  \brief `denoise_point_set()` on a `CGAL::Point_set_3` with normals: its points move in place and its
+  normal map receives the filtered normals.
+  \pre `points.has_normal_map()`, otherwise `std::invalid_argument`
+*/
+template <typename ConcurrencyTag, typename Point, typename Vector, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Point_set_denoising_summary denoise_point_set(CGAL::Point_set_3<Point, Vector>& points,
+                                              const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  internal::require_normal_map(points, "denoise_point_set");
+  auto indices = internal::point_set_indices(points);
+  return denoise_point_set<ConcurrencyTag>(indices, internal::with_point_set_maps(points, np));
 }
 
 /*!

@@ -32,6 +32,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -169,105 +170,125 @@ bool voting_tensor_update(const std::vector<Eigen::Vector3d>& normals, std::size
   return true;
 }
 
-// The sweeps of the filter on `input` (normals replaced), with the ball neighborhoods or `given`.
+// The normal voting filter's state between sweeps: its neighborhoods Omega_i (the balls of
+// yadav-normal-filtering.md §2 built once, or the caller's), and with adaptive sizes the k-NN rows
+// and the sizes chosen. filter_normals() runs its sweeps; the denoiser runs one per iteration and
+// reads the neighborhoods of the last sweep for its other two stages.
 template <typename ConcurrencyTag>
-Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_lists* given,
-                                         const Normal_filter_settings& s)
+class Normal_voting_filter
 {
-  const std::size_t n = input.size();
-  if(n == 0)
-    throw std::invalid_argument("filter_normals(): no points");
-  if(n > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
-    throw std::invalid_argument("filter_normals(): too many points");
-  Normal_filter_summary summary;
-  summary.points = n;
-  summary.iterations = s.iterations;
-
-  // The one kd-tree of the filter, for the scale, the balls and the adaptive k-NN: none when the
-  // caller gives the neighborhoods of a plain filter.
-  std::optional<Neighbor_query> query;
-  if(given == nullptr || s.adaptive)
-    query.emplace(input.points);
-
-  // The default neighborhoods Omega_i, built once (yadav-normal-filtering.md §2).
-  Neighbor_lists ball;
-  if(given == nullptr)
+public:
+  // `query`, the point set's one neighbor structure, is read for the scale, the balls and the
+  // adaptive k-NN: it may be null when `given` holds the neighborhoods of a plain filter.
+  Normal_voting_filter(const Oriented_points& input, const Neighbor_query* query, const Neighbor_lists* given,
+                       const Normal_filter_settings& s)
+    : m_settings(s), m_given(given), m_n(input.size())
   {
-    double radius = s.radius;
-    if(radius == 0.)
-    {
-      if(n < FILTER_SCALE_NEIGHBORS + 1)
-        throw std::invalid_argument("filter_normals(): the default radius needs at least " +
-                                    std::to_string(FILTER_SCALE_NEIGHBORS + 1) + " points, got " + std::to_string(n) +
-                                    " (or give neighbor_radius or neighborhoods)");
-      radius = FILTER_RADIUS_FACTOR * mean_neighbor_distance<ConcurrencyTag>(*query, FILTER_SCALE_NEIGHBORS, s.threads);
-    }
-    summary.radius = radius;
-    ball = ball_neighborhoods<ConcurrencyTag>(*query, radius, s.threads);
-  }
-  const Neighbor_lists& omega = given != nullptr ? *given : ball;
-  summary.mean_neighbors = double(omega.indices.size()) / double(n);
+    const std::size_t n = m_n;
+    if(n == 0)
+      throw std::invalid_argument("no points");
+    if(n > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
+      throw std::invalid_argument("too many points");
+    CGAL_precondition(query != nullptr || (given != nullptr && !s.adaptive));
+    m_summary.points = n;
 
-  // Adaptive sizes (SPEC §7): one k-NN query of k_i + range neighbors per point, the sizes
-  // {k_i - range, ..., k_i + range} (positive, at most n - 1) evaluated on it in every sweep.
-  std::vector<std::size_t> knn_offsets(n + 1, 0);
-  std::vector<unsigned int> k_low(n, 0), k_high(n, 0);
-  if(s.adaptive)
+    if(given == nullptr)
+    {
+      double radius = s.radius;
+      if(radius == 0.)
+      {
+        if(n < FILTER_SCALE_NEIGHBORS + 1)
+          throw std::invalid_argument("the default radius needs at least " + std::to_string(FILTER_SCALE_NEIGHBORS + 1) +
+                                      " points, got " + std::to_string(n) + " (or give neighbor_radius or neighborhoods)");
+        m_scale = mean_neighbor_distance<ConcurrencyTag>(*query, FILTER_SCALE_NEIGHBORS, s.threads);
+        radius = FILTER_RADIUS_FACTOR * m_scale;
+      }
+      m_summary.radius = radius;
+      m_ball = ball_neighborhoods<ConcurrencyTag>(*query, radius, s.threads);
+    }
+    m_summary.mean_neighbors = double(omega().indices.size()) / double(n);
+
+    // Adaptive sizes (SPEC §7): one k-NN query of k_i + range neighbors per point, the sizes
+    // {k_i - range, ..., k_i + range} (positive, at most n - 1) evaluated on it in every sweep.
+    if(!s.adaptive)
+      return;
+    m_knn_offsets.assign(n + 1, 0);
+    m_k_low.assign(n, 0);
+    m_k_high.assign(n, 0);
     for(std::size_t i = 0; i < n; ++i)
     {
-      const std::size_t k_i = omega.count(i);
-      k_low[i] = k_i > s.size_range ? unsigned(k_i - s.size_range) : 1u;
-      k_high[i] = unsigned((std::min)(k_i + s.size_range, n - 1));
-      knn_offsets[i + 1] = knn_offsets[i] + k_high[i];
+      const std::size_t k_i = omega().count(i);
+      m_k_low[i] = k_i > s.size_range ? unsigned(k_i - s.size_range) : 1u;
+      m_k_high[i] = unsigned((std::min)(k_i + s.size_range, n - 1));
+      m_knn_offsets[i + 1] = m_knn_offsets[i] + m_k_high[i];
     }
-  std::vector<Neighbor> knn(knn_offsets[n]);
-  // The cut-off weights of the last evaluation (point first), and the size chosen (0: fallback).
-  std::vector<unsigned char> cached_weights(s.adaptive ? knn_offsets[n] + n : 0);
-  std::vector<unsigned char> cached(n, 0);
-  std::vector<unsigned int> chosen(n, 0);
-  std::vector<std::uint64_t> selected_sizes(n, 0);
-  std::vector<std::uint32_t> empty_cones(n, 0), fallbacks(n, 0);
-  if(s.adaptive && knn_offsets[n] > 0)
-  {
+    m_knn.resize(m_knn_offsets[n]);
     for_each_index<ConcurrencyTag>(
       n, s.threads, [] { return std::vector<Neighbor>(); },
       [&](std::size_t i, std::vector<Neighbor>& found) {
-        query->query(static_cast<std::uint32_t>(i), k_high[i], found);
-        std::copy(found.begin(), found.end(), knn.begin() + std::ptrdiff_t(knn_offsets[i]));
+        query->query(static_cast<std::uint32_t>(i), m_k_high[i], found);
+        for(std::size_t j = 0; j < found.size(); ++j)
+          m_knn[m_knn_offsets[i] + j] = found[j].index;
       });
+    m_cached_weights.assign(m_knn_offsets[n] + n, 0);
+    m_cached.assign(n, 0);
+    m_chosen.assign(n, 0);
+    m_selected_sizes.assign(n, 0);
+    m_fallbacks.assign(n, 0);
   }
-  const double cut_off_angle = std::acos(s.cut_off);
-  const Cosine_sigmoid sigmoid(cut_off_angle, cut_off_angle, s.angle_tolerance);
 
-  struct Scratch
+  // The scale m of the default radius (0 when the radius or the neighborhoods were given).
+  double scale() const { return m_scale; }
+
+  // The neighborhoods Omega_i: the balls or the caller's.
+  const Neighbor_lists& omega() const { return m_given != nullptr ? *m_given : m_ball; }
+
+  // The neighbors of i in the last sweep: Omega_i, or with adaptive sizes the k chosen nearest.
+  std::pair<const std::uint32_t*, const std::uint32_t*> neighbors(std::size_t i) const
   {
-    std::vector<Neighbor> neighbors;
-    Local_neighborhood local;
-    std::vector<double> weights;
-  };
-  std::vector<Eigen::Vector3d> next(n);
-  for(unsigned int iteration = 0; iteration < s.iterations; ++iteration)
+    if(m_settings.adaptive && m_chosen[i] != 0)
+      return {m_knn.data() + m_knn_offsets[i], m_knn.data() + m_knn_offsets[i] + m_chosen[i]};
+    return {omega().begin(i), omega().end(i)};
+  }
+
+  // One sweep (Jacobi): every new normal from the old ones. `positions_moved`: the positions
+  // changed since the last sweep, so that an adaptive size is chosen again even where the cut-off
+  // weights did not change.
+  void sweep(Oriented_points& input, bool positions_moved = false)
   {
+    const Normal_filter_settings& s = m_settings;
+    const std::size_t n = m_n;
+    if(m_empty_cones.empty())
+      m_empty_cones.assign(n, 0);
+    const double cut_off_angle = std::acos(s.cut_off);
+    const Cosine_sigmoid sigmoid(cut_off_angle, cut_off_angle, s.angle_tolerance);
+    struct Scratch
+    {
+      std::vector<Neighbor> neighbors;
+      Local_neighborhood local;
+      std::vector<double> weights;
+    };
+    m_next.resize(n);
     const std::vector<Eigen::Vector3d>& normals = input.normals;
+    const Neighbor_lists& omega = this->omega();
+    auto own_index = [](std::uint32_t j) { return j; };
     for_each_index<ConcurrencyTag>(
       n, s.threads, [] { return Scratch(); },
       [&](std::size_t i, Scratch& scratch) {
         bool voted = false;
-        auto own_index = [](std::uint32_t j) { return j; };
         if(!s.adaptive)
-          voted = voting_tensor_update(normals, i, omega.begin(i), omega.end(i), own_index, false, s, next[i]);
+          voted = voting_tensor_update(normals, i, omega.begin(i), omega.end(i), own_index, false, s, m_next[i]);
         else
         {
           // The size of least E_dim with the cut-off weights a = b = arccos(rho) of the current
-          // normals. Positions are fixed, so equal weights give the same choice as last time.
-          const Neighbor* found = knn.data() + knn_offsets[i];
-          const std::size_t count = knn_offsets[i + 1] - knn_offsets[i];
-          unsigned char* weights = cached_weights.data() + knn_offsets[i] + i;
-          bool same = cached[i] != 0;
+          // normals. Unless positions moved, equal weights give the same choice as last time.
+          const std::uint32_t* found = m_knn.data() + m_knn_offsets[i];
+          const std::size_t count = m_knn_offsets[i + 1] - m_knn_offsets[i];
+          unsigned char* weights = m_cached_weights.data() + m_knn_offsets[i] + i;
+          bool same = m_cached[i] != 0 && !positions_moved;
           for(std::size_t j = 0; j < count; ++j)
           {
-            const unsigned char w =
-              sigmoid.weight_from_cosine(input.cosine(i, found[j].index)) > 0. ? 1 : 0;
+            const unsigned char w = sigmoid.weight_from_cosine(input.cosine(i, found[j])) > 0. ? 1 : 0;
             if(weights[j + 1] != w)
               same = false;
             weights[j + 1] = w;
@@ -275,43 +296,91 @@ Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_
           if(!same)
           {
             weights[0] = 1;
-            scratch.neighbors.assign(found, found + count);
+            scratch.neighbors.resize(count);
+            for(std::size_t j = 0; j < count; ++j)
+              scratch.neighbors[j] = Neighbor{found[j], 0.};
             scratch.local.assign(input, static_cast<std::uint32_t>(i), scratch.neighbors);
             scratch.weights.resize(scratch.local.size());
             scratch.local.weights(sigmoid, scratch.weights.data());
-            chosen[i] = scratch.local.best_size(scratch.weights.data(), k_low[i], k_high[i], s.barycenter).k;
-            cached[i] = 1;
+            m_chosen[i] = scratch.local.best_size(scratch.weights.data(), m_k_low[i], m_k_high[i], s.barycenter).k;
+            m_cached[i] = 1;
           }
-          if(chosen[i] == 0)
+          if(m_chosen[i] == 0)
           {
             // Every size degenerate: the default neighborhood with equal weights.
-            ++fallbacks[i];
-            voted = voting_tensor_update(normals, i, omega.begin(i), omega.end(i), own_index, true, s, next[i]);
+            ++m_fallbacks[i];
+            voted = voting_tensor_update(normals, i, omega.begin(i), omega.end(i), own_index, true, s, m_next[i]);
           }
           else
           {
-            selected_sizes[i] += chosen[i];
-            voted = voting_tensor_update(normals, i, found, found + chosen[i],
-                                         [](const Neighbor& x) { return x.index; }, false, s, next[i]);
+            m_selected_sizes[i] += m_chosen[i];
+            voted = voting_tensor_update(normals, i, found, found + m_chosen[i], own_index, false, s, m_next[i]);
           }
         }
         if(!voted)
-          ++empty_cones[i];
+          ++m_empty_cones[i];
       });
-    std::swap(input.normals, next);
+    std::swap(input.normals, m_next);
+    ++m_summary.iterations;
   }
 
-  std::uint64_t selected_total = 0;
-  for(std::size_t i = 0; i < n; ++i)
+  // What the sweeps did so far.
+  Normal_filter_summary summary() const
   {
-    summary.empty_cones += empty_cones[i];
-    summary.fallbacks += fallbacks[i];
-    selected_total += selected_sizes[i];
+    Normal_filter_summary summary = m_summary;
+    std::uint64_t selected_total = 0;
+    for(std::size_t i = 0; i < m_empty_cones.size(); ++i)
+      summary.empty_cones += m_empty_cones[i];
+    for(std::size_t i = 0; i < m_fallbacks.size(); ++i)
+    {
+      summary.fallbacks += m_fallbacks[i];
+      selected_total += m_selected_sizes[i];
+    }
+    const std::size_t selections = std::size_t(summary.iterations) * m_n - summary.fallbacks;
+    if(m_settings.adaptive && selections > 0)
+      summary.mean_selected_size = double(selected_total) / double(selections);
+    return summary;
   }
-  const std::size_t selections = std::size_t(s.iterations) * n - summary.fallbacks;
-  if(s.adaptive && selections > 0)
-    summary.mean_selected_size = double(selected_total) / double(selections);
-  return summary;
+
+private:
+  Normal_filter_settings m_settings;
+  const Neighbor_lists* m_given;
+  std::size_t m_n;
+  double m_scale = 0.;
+  Neighbor_lists m_ball;
+  Normal_filter_summary m_summary;
+  // adaptive: the k-NN rows, the size range, the cut-off weights of the last evaluation (point
+  // first), the size chosen (0: fallback), and the counts of the summary
+  std::vector<std::size_t> m_knn_offsets;
+  std::vector<std::uint32_t> m_knn;
+  std::vector<unsigned int> m_k_low, m_k_high;
+  std::vector<unsigned char> m_cached_weights, m_cached;
+  std::vector<unsigned int> m_chosen;
+  std::vector<std::uint64_t> m_selected_sizes;
+  std::vector<std::uint32_t> m_fallbacks, m_empty_cones;
+  std::vector<Eigen::Vector3d> m_next;
+};
+
+// The sweeps of the filter on `input` (normals replaced), with the ball neighborhoods or `given`.
+template <typename ConcurrencyTag>
+Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_lists* given,
+                                         const Normal_filter_settings& s)
+{
+  try
+  {
+    // The one kd-tree of the filter: none when the caller gives the neighborhoods of a plain filter.
+    std::optional<Neighbor_query> query;
+    if(given == nullptr || s.adaptive)
+      query.emplace(input.points);
+    Normal_voting_filter<ConcurrencyTag> filter(input, query ? &*query : nullptr, given, s);
+    for(unsigned int iteration = 0; iteration < s.iterations; ++iteration)
+      filter.sweep(input);
+    return filter.summary();
+  }
+  catch(const std::invalid_argument& e)
+  {
+    throw std::invalid_argument(std::string("filter_normals(): ") + e.what());
+  }
 }
 
 } // namespace internal
