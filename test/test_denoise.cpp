@@ -330,6 +330,8 @@ TEST_CASE("denoise: bad inputs", "[denoise][errors]")
                     Catch::Contains("rank threshold"));
   CHECK_THROWS_WITH(SN::denoise_point_set<CGAL::Sequential_tag>(ok, SNP::maximum_deviation(-1., maps())),
                     Catch::Contains("maximum deviation"));
+  CHECK_THROWS_WITH(SN::denoise_point_set<CGAL::Sequential_tag>(ok, SNP::planar_weight_radius(std::nan(""), maps())),
+                    Catch::Contains("planar weight radius"));
   CHECK_THROWS_WITH(SN::denoise_point_set<CGAL::Sequential_tag>(ok, SNP::normal_cut_off(1.5, maps())),
                     Catch::Contains("cut-off must lie in [-1, 1]"));
   CHECK(ok == unchanged); // nothing written on an error

@@ -35,8 +35,8 @@ namespace sigmoid_tool {
 inline const char* DENOISE_POINT_SET_USAGE =
   "usage: sigmoid-neighborhoods denoise INPUT -o OUTPUT [--adaptive] [--iterations 50] [--cut-off 0.9]\n"
   "         [--eigenvalue-threshold 0.25] [--damping 3] [--radius R] [--size-range 10] [--step 0.1]\n"
-  "         [--max-deviation E] [--rank-threshold 0.1] [--authors-update] [--no-stop] [--in-place]\n"
-  "         [--threads N] [normals]\n"
+  "         [--max-deviation E] [--weight-radius R] [--rank-threshold 0.1] [--authors-update] [--no-stop]\n"
+  "         [--in-place] [--threads N] [normals]\n"
   "  Yadav et al. 2018: per iteration, normal filtering, corner/edge/planar classification, vertex update\n"
   "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply; normals estimated when absent)\n"
   "  OUTPUT: .xyz or .pwn (x y z nx ny nz), .ply (binary point cloud with normals); for a mesh INPUT\n"
@@ -45,6 +45,7 @@ inline const char* DENOISE_POINT_SET_USAGE =
   "                level estimated from the input (--no-stop: all of them)\n"
   "  --step: the step alpha towards each rule's target; --max-deviation: a move farther than E from the\n"
   "          input position is refused (default 2 m, m the mean distance to 12 neighbors)\n"
+  "  --weight-radius: r of the planar weights exp(-4 |p_j - p_i|^2 / r^2) (default 2 m)\n"
   "  --rank-threshold: edge and corner solves drop directions of relative eigenvalue below it (0: none)\n"
   "  --authors-update: stage 3 as the authors' code (unweighted metrics, full steps, normal term in r)\n"
   "  --in-place: stages 2 and 3 update in place in input order (the authors' Gauss-Seidel), one thread\n"
@@ -83,6 +84,7 @@ auto denoising_parameters(const Filter_options& f, const Arguments& args, const 
   return SNP::step_size(args.get_double("--step", SN::DEFAULT_PLANAR_STEP_SIZE),
     SNP::maximum_deviation(args.get_double("--max-deviation", 0.),
     SNP::rank_threshold(args.get_double("--rank-threshold", SN::DEFAULT_RANK_THRESHOLD),
+    SNP::planar_weight_radius(args.get_double("--weight-radius", 0.),
     SNP::authors_vertex_update(args.has("--authors-update"),
     SNP::stop_at_noise_level(!args.has("--no-stop"),
     SNP::in_place_updates(args.has("--in-place"),
@@ -90,7 +92,7 @@ auto denoising_parameters(const Filter_options& f, const Arguments& args, const 
     SNP::eigenvalue_threshold(f.eigenvalue_threshold, SNP::damping_factor(f.damping,
     SNP::adaptive_neighborhood_size(f.adaptive, SNP::neighborhood_size_range(f.size_range,
     SNP::angle_tolerance(f.angle_tolerance,
-      np.number_of_iterations(f.iterations).neighbor_radius(f.radius)))))))))))))));
+      np.number_of_iterations(f.iterations).neighbor_radius(f.radius))))))))))))))));
 }
 
 inline std::string denoising_summary_text(const SN::Point_set_denoising_summary& s)
@@ -114,6 +116,9 @@ inline void check_denoising_arguments(const Arguments& args)
   const double deviation = args.get_double("--max-deviation", 0.);
   if(args.has("--max-deviation") && !(deviation > 0. && std::isfinite(deviation)))
     throw Usage_error("--max-deviation must be finite and > 0");
+  const double weight_radius = args.get_double("--weight-radius", 0.);
+  if(args.has("--weight-radius") && !(weight_radius > 0. && std::isfinite(weight_radius)))
+    throw Usage_error("--weight-radius must be finite and > 0");
   const double rank = args.get_double("--rank-threshold", SN::DEFAULT_RANK_THRESHOLD);
   if(!(rank >= 0. && rank <= 1.))
     throw Usage_error("--rank-threshold must lie in [0, 1]");
@@ -125,7 +130,7 @@ inline int run_denoise_point_set(int argc, char** argv)
     argc, argv, FIRST_COMMAND_ARGUMENT,
     with_normal_options({"-o", "--output", "--iterations", "--cut-off", "--eigenvalue-threshold", "--damping", "--radius",
                          "--size-range", "--angle-tolerance", "--threads", "--step", "--max-deviation",
-                         "--rank-threshold"}),
+                         "--rank-threshold", "--weight-radius"}),
     with_normal_flags({"-h", "--help", "--adaptive", "--authors-update", "--no-stop", "--in-place"}),
     NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, DENOISE_POINT_SET_USAGE))

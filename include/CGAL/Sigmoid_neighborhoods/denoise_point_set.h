@@ -23,10 +23,11 @@
 
 #include <boost/property_map/property_map.hpp>
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -44,7 +45,9 @@ constexpr double DEFAULT_PLANAR_STEP_SIZE = 0.1;
 /// `m` (the authors' code: `2 m`): a move beyond it is refused, so that no point wanders off.
 constexpr double DEVIATION_SCALE_FACTOR = 2.;
 /// \ingroup PkgSigmoidNeighborhoodsDenoising
-/// The radius `r` of the planar rule's weights, in units of the scale `m` (the authors' code: `2 m`).
+/// The default radius `r` of the planar rule's weights, in units of the scale `m` (the authors' code:
+/// `2 m`): a neighbor's distance term `exp(-4 |p_j - p_i|^2 / r^2)` falls to `exp(-4)` at two spacings,
+/// so that the rule averages over the point's own ring of neighbors, not across features.
 constexpr double PLANAR_WEIGHT_SCALE_FACTOR = 2.;
 /// \ingroup PkgSigmoidNeighborhoodsDenoising
 /// The default rank threshold of the edge and corner solves: a direction whose eigenvalue of the
@@ -61,7 +64,8 @@ constexpr double DISCREPANCY_FACTOR = 1.1;
 namespace internal {
 // the standard deviation of a Gaussian per median of its absolute value
 constexpr double NOISE_LEVEL_PER_MEDIAN = 1.482602218505602;
-// the neighbors of the plane fits of the noise estimate: enough that one point's noise barely tilts them
+// the neighbors of the noise estimate's quadric fits: more than the six coefficients, few enough
+// that features seldom enter
 constexpr unsigned int NOISE_ESTIMATION_NEIGHBORS = 20;
 } // namespace internal
 /// \endcond
@@ -100,6 +104,7 @@ struct Denoising_settings
   Normal_filter_settings filter;
   double step_size = DEFAULT_PLANAR_STEP_SIZE;
   double maximum_deviation = 0.; // 0: DEVIATION_SCALE_FACTOR times the scale
+  double weight_radius = 0.;     // 0: PLANAR_WEIGHT_SCALE_FACTOR times the scale
   double rank_threshold = DEFAULT_RANK_THRESHOLD;
   bool in_place = false;         // the authors' Gauss-Seidel order of stages 2 and 3, sequential
   bool authors_vertex_update = false;
@@ -117,6 +122,7 @@ Denoising_settings denoising_settings(const NamedParameters& np)
   s.step_size = choose_parameter(get_parameter(np, internal_np::step_size), DEFAULT_PLANAR_STEP_SIZE);
   s.maximum_deviation = choose_parameter(get_parameter(np, internal_np::maximum_deviation), 0.);
   s.rank_threshold = choose_parameter(get_parameter(np, internal_np::rank_threshold), DEFAULT_RANK_THRESHOLD);
+  s.weight_radius = choose_parameter(get_parameter(np, internal_np::planar_weight_radius), 0.);
   s.in_place = choose_parameter(get_parameter(np, internal_np::in_place_updates), false);
   s.authors_vertex_update = choose_parameter(get_parameter(np, internal_np::authors_vertex_update), false);
   s.stop_at_noise_level = choose_parameter(get_parameter(np, internal_np::stop_at_noise_level), true);
@@ -126,6 +132,9 @@ Denoising_settings denoising_settings(const NamedParameters& np)
   if(!(s.maximum_deviation >= 0. && std::isfinite(s.maximum_deviation)))
     throw std::invalid_argument("the maximum deviation must be finite and >= 0, got " +
                                 std::to_string(s.maximum_deviation));
+  if(!(s.weight_radius >= 0. && std::isfinite(s.weight_radius)))
+    throw std::invalid_argument("the planar weight radius must be finite and >= 0, got " +
+                                std::to_string(s.weight_radius));
   if(!(s.rank_threshold >= 0. && s.rank_threshold <= 1.))
     throw std::invalid_argument("the rank threshold must lie in [0, 1], got " + std::to_string(s.rank_threshold));
   return s;
@@ -234,7 +243,7 @@ Point_set_denoising_summary denoise_all(Oriented_points& input, const Neighbor_l
   u.cut_off = s.filter.cut_off;
   u.eigenvalue_threshold = s.filter.eigenvalue_threshold;
   u.step_size = s.step_size;
-  u.weight_radius = PLANAR_WEIGHT_SCALE_FACTOR * summary.scale;
+  u.weight_radius = s.weight_radius > 0. ? s.weight_radius : PLANAR_WEIGHT_SCALE_FACTOR * summary.scale;
   // The authors' width of the normal term is r, a length, so that the term depends on the model's
   // size; the package's is the chord of the cut-off cone, |n_i - n_j| = sqrt(2 (1 - rho)), where the
   // term is exp(-8): neighbors outside the cone do not count, whatever the size.
@@ -415,6 +424,13 @@ Point_set_denoising_summary denoise_all(Oriented_points& input, const Neighbor_l
         input position or farther is refused}
       \cgalParamType{`double`}
       \cgalParamDefault{`2 m` (`DEVIATION_SCALE_FACTOR`)}
+      \cgalParamExtra{finite and `>= 0` (0 selects the default), otherwise `std::invalid_argument`}
+    \cgalParamNEnd
+    \cgalParamNBegin{planar_weight_radius}
+      \cgalParamDescription{the radius `r` of the weights `exp(-4 |p_j - p_i|^2 / r^2)` of the planar
+        rule (and of the package's edge and corner metrics)}
+      \cgalParamType{`double`}
+      \cgalParamDefault{`2 m` (`PLANAR_WEIGHT_SCALE_FACTOR`, the authors')}
       \cgalParamExtra{finite and `>= 0` (0 selects the default), otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{rank_threshold}

@@ -59,8 +59,9 @@ inline Eigen::Vector3d to_eigen(const Double_point& p) { return Eigen::Vector3d(
 // mu > rank_threshold * mu_max (and mu > 0). A direction the neighbors' planes do not constrain is
 // not solved for, and the point keeps its coordinate along it (Lindstrom's rule for QEM vertex
 // placement): the authors' code inverts A, which is near-singular wherever the neighbor normals agree.
+// The `fixed` directions of the smallest eigenvalues are never solved for, nor counted as dropped.
 inline Eigen::Vector3d qem_offset(const Eigen::Matrix3d& a, const Eigen::Vector3d& b, double rank_threshold,
-                                  bool& rank_deficient)
+                                  bool& rank_deficient, int fixed = 0)
 {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(a, Eigen::ComputeEigenvectors);
   const Eigen::Vector3d& mu = solver.eigenvalues();
@@ -73,7 +74,7 @@ inline Eigen::Vector3d qem_offset(const Eigen::Matrix3d& a, const Eigen::Vector3
     rank_deficient = true;
     return x;
   }
-  for(int k = 0; k < 3; ++k)
+  for(int k = fixed; k < 3; ++k)
   {
     if(mu[k] > rank_threshold * largest && mu[k] > 0.)
       x += v.col(k) * (v.col(k).dot(b) / mu[k]);
@@ -175,22 +176,8 @@ Vertex_update update_vertex(const PointVector& points, const std::vector<Eigen::
     a.noalias() += w * m * m.transpose();
     b += w * m * m.dot(d);
   }
-  // a has e in its kernel: solve on the two largest eigenpairs, the smallest (along e) never counts
-  // as a dropped direction.
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(a, Eigen::ComputeEigenvectors);
-  const Eigen::Vector3d& mu = solver.eigenvalues();
-  const Eigen::Matrix3d& v = solver.eigenvectors();
-  Eigen::Vector3d x = Eigen::Vector3d::Zero();
-  if(!(mu[2] > 0.))
-    result.rank_deficient = true;
-  else
-    for(int k = 1; k < 3; ++k)
-    {
-      if(mu[k] > s.rank_threshold * mu[2] && mu[k] > 0.)
-        x += v.col(k) * (v.col(k).dot(b) / mu[k]);
-      else
-        result.rank_deficient = true;
-    }
+  // a has e in its kernel: solved on its two largest eigenpairs, the point keeps its coordinate along e.
+  const Eigen::Vector3d x = qem_offset(a, b, s.rank_threshold, result.rank_deficient, 1);
   result.position = p + step * x;
   return result;
 }
