@@ -208,7 +208,7 @@ TEST_CASE("denoise: the rank test keeps a point where the planes do not constrai
   CHECK(std::abs(literal[0]) > 1e10);
 }
 
-TEST_CASE("denoise: bit-identical on 1 and 2 threads and sequentially; in place differs", "[denoise][parallel]")
+TEST_CASE("denoise: bit-identical on 1 and 2 threads and sequentially, in place differs", "[denoise][parallel]")
 {
   const Points input = noisy_corner(12, 0.3, 3);
   Points sequential = input, one = input, two = input, adaptive_one = input, adaptive_two = input, in_place = input;

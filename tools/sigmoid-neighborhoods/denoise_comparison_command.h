@@ -69,7 +69,7 @@ struct Comparison_row
 
 inline const char* noise_name(Noise_direction d) { return d == Noise_direction::NORMAL ? "normal" : "isotropic"; }
 
-// The clean positions and normals of a mesh's vertices; false when a normal is undefined.
+// The clean positions and normals of a mesh's vertices; a vertex without a defined normal is an error.
 inline void clean_vertices(const Denoise_mesh& mesh, std::vector<Denoise_point>& points,
                            std::vector<Denoise_vector>& normals, const std::string& name)
 {

@@ -200,8 +200,7 @@ public:
         if(n < FILTER_SCALE_NEIGHBORS + 1)
           throw std::invalid_argument("the default radius needs at least " + std::to_string(FILTER_SCALE_NEIGHBORS + 1) +
                                       " points, got " + std::to_string(n) + " (or give neighbor_radius or neighborhoods)");
-        m_scale = mean_neighbor_distance<ConcurrencyTag>(*query, FILTER_SCALE_NEIGHBORS, s.threads);
-        radius = FILTER_RADIUS_FACTOR * m_scale;
+        radius = FILTER_RADIUS_FACTOR * mean_neighbor_distance<ConcurrencyTag>(*query, FILTER_SCALE_NEIGHBORS, s.threads);
       }
       m_summary.radius = radius;
       m_ball = ball_neighborhoods<ConcurrencyTag>(*query, radius, s.threads);
@@ -236,9 +235,6 @@ public:
     m_selected_sizes.assign(n, 0);
     m_fallbacks.assign(n, 0);
   }
-
-  // The scale m of the default radius (0 when the radius or the neighborhoods were given).
-  double scale() const { return m_scale; }
 
   // The neighborhoods Omega_i: the balls or the caller's.
   const Neighbor_lists& omega() const { return m_given != nullptr ? *m_given : m_ball; }
@@ -346,7 +342,6 @@ private:
   Normal_filter_settings m_settings;
   const Neighbor_lists* m_given;
   std::size_t m_n;
-  double m_scale = 0.;
   Neighbor_lists m_ball;
   Normal_filter_summary m_summary;
   // adaptive: the k-NN rows, the size range, the cut-off weights of the last evaluation (point
