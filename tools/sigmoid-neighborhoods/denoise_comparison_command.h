@@ -109,12 +109,12 @@ inline void write_comparison_table(std::ostream& out, const std::vector<Comparis
   for(const auto& m : first)
     if(m.normal_mse >= 0.)
     {
-      out << (first_name ? "" : ", ") << m.method;
+      out << (first_name ? "" : "; ") << m.method;
       first_name = false;
     }
   out << ") | seconds (";
   for(std::size_t i = 1; i < first.size(); ++i)
-    out << (i == 1 ? "" : ", ") << first[i].method;
+    out << (i == 1 ? "" : "; ") << first[i].method;
   out << ") |\n|---|---|---:|";
   for(std::size_t i = 0; i < first.size(); ++i)
     out << "---:|";
@@ -142,12 +142,12 @@ inline void write_comparison_table(std::ostream& out, const std::vector<Comparis
     for(const auto& m : r.methods)
       if(m.normal_mse >= 0.)
       {
-        out << (first_value ? "" : ", ") << fixed(m.normal_mse, 4);
+        out << (first_value ? "" : "; ") << fixed(m.normal_mse, 4);
         first_value = false;
       }
     out << " | ";
     for(std::size_t i = 1; i < r.methods.size(); ++i)
-      out << (i == 1 ? "" : ", ") << fixed(r.methods[i].seconds, 2);
+      out << (i == 1 ? "" : "; ") << fixed(r.methods[i].seconds, 2);
     out << " |\n";
   }
   out << "\n## Models\n\n";
