@@ -80,6 +80,21 @@ double corner_distance(const Point& p)
   return std::sqrt(ox * ox + oy * oy + oz * oz);
 }
 
+// A Fibonacci sphere of n points moved along their exact normals by N(0, sigma^2).
+Points noisy_sphere(int n, double radius, double sigma, std::uint64_t seed)
+{
+  std::mt19937_64 engine(seed);
+  std::normal_distribution<double> noise(0., sigma);
+  Points points;
+  for(int i = 0; i < n; ++i)
+  {
+    const double z = 1. - 2. * (i + 0.5) / n, r = std::sqrt(1. - z * z), phi = i * 2.399963229728653;
+    const Vector normal(r * std::cos(phi), r * std::sin(phi), z);
+    points.emplace_back(CGAL::ORIGIN + (radius + noise(engine)) * normal, normal);
+  }
+  return points;
+}
+
 double rms_z(const Points& points)
 {
   double sum = 0.;
@@ -131,16 +146,8 @@ TEST_CASE("denoise: on a sphere the iterations stop at the noise level", "[denoi
   // A Fibonacci sphere of radius 12 (spacing about 1) with noise 0.3 along the normals: the filtered
   // normals turn into facets and the points drift; the discrepancy rule stops them.
   const int n = 1800;
-  const double radius = 12., sigma = 0.3;
-  std::mt19937_64 engine(11);
-  std::normal_distribution<double> noise(0., sigma);
-  Points points;
-  for(int i = 0; i < n; ++i)
-  {
-    const double z = 1. - 2. * (i + 0.5) / n, r = std::sqrt(1. - z * z), phi = i * 2.399963229728653;
-    const Vector normal(r * std::cos(phi), r * std::sin(phi), z);
-    points.emplace_back(CGAL::ORIGIN + (radius + noise(engine)) * normal, normal);
-  }
+  const double sigma = 0.3;
+  Points points = noisy_sphere(n, 12., sigma, 11);
   const Points input = points;
   const auto s = SN::denoise_point_set<CGAL::Sequential_tag>(points, maps());
   double squares = 0.;
@@ -341,4 +348,36 @@ TEST_CASE("denoise: bad inputs", "[denoise][errors]")
   CHECK(s.unclassified == 20);
   for(const auto& p : duplicates)
     CHECK(p.first == Point(1, 2, 3));
+}
+
+TEST_CASE("denoise: the optimal sigmoid weights in the vote", "[denoise][parallel]")
+{
+  const Points input = noisy_corner(12, 0.3, 12);
+  const double before = mean_corner_distance(input);
+  Points one = input, two = input, plain = input;
+  const auto s = SN::denoise_point_set<CGAL::Parallel_tag>(
+    one, SNP::optimal_vote_weights(true, SNP::number_of_threads(1, maps())));
+  SN::denoise_point_set<CGAL::Parallel_tag>(two, SNP::optimal_vote_weights(true, SNP::number_of_threads(2, maps())));
+  SN::denoise_point_set<CGAL::Sequential_tag>(plain, maps());
+  std::size_t equal = 0;
+  for(std::size_t i = 0; i < input.size(); ++i)
+    equal += (one[i] == two[i]);
+  CHECK(equal == input.size());
+  // The corner's exact normals are 0 or 90 degrees apart: there the weights vote as the cut-off does.
+  // On a sphere the normals turn continuously, and the weights change the votes.
+  Points sphere = noisy_sphere(600, 7., 0.2, 14), sphere_plain = sphere;
+  SN::denoise_point_set<CGAL::Sequential_tag>(sphere, SNP::optimal_vote_weights(true, maps()));
+  SN::denoise_point_set<CGAL::Sequential_tag>(sphere_plain, maps());
+  std::size_t differs = 0;
+  for(std::size_t i = 0; i < sphere.size(); ++i)
+    differs += (sphere[i].second != sphere_plain[i].second);
+  CHECK(differs > sphere.size() / 2);
+  CHECK(s.cut_off_votes < input.size() / 10);
+  CHECK(mean_corner_distance(one) < 0.6 * before);
+  // The search needs k_max + 1 points.
+  Points few = noisy_plane(4, 0.1, 13); // 16 points: enough for the scale, not for k_max = 20
+  CHECK_THROWS_WITH(SN::denoise_point_set<CGAL::Sequential_tag>(few, SNP::optimal_vote_weights(true, maps())),
+                    Catch::Contains("optimal vote weights"));
+  CHECK_NOTHROW(SN::denoise_point_set<CGAL::Sequential_tag>(
+    few, SNP::optimal_vote_weights(true, SNP::k_min(4, SNP::k_max(10, maps())))));
 }

@@ -33,7 +33,7 @@ inline const char* DENOISE_COMPARISON_USAGE =
   "          models of CGAL's data and ../shared/data/clean that exist (see the manual)\n"
   "  every model gets noise of each level (sd in units of l, the mean distance to 6 neighbors) along its\n"
   "  normals and isotropically, PCA normals on 12 neighbors oriented like the clean ones, then: the\n"
-  "  package's denoise_point_set (defaults; adaptive; in place; the authors' stage 3), CGAL's jet_smooth_point_set (k 18) and\n"
+  "  package's denoise_point_set (defaults; adaptive; (a*, b*) vote; in place; the authors' stage 3), CGAL's jet_smooth_point_set (k 18) and\n"
   "  bilateral_smooth_point_set (k 18, sharpness 25 degrees, 3 iterations)\n"
   "  writes DIR/denoising.md, DIR/denoising.csv, DIR/denoising_points.csv and DIR/denoising.png\n";
 
@@ -96,7 +96,8 @@ inline void write_comparison_table(std::ostream& out, const std::vector<Comparis
          "on each axis); initial normals by PCA on 12 neighbors, each turned to agree with the clean normal. "
          "*package*: `denoise_point_set()` with its defaults (at most 50 iterations, cut-off 0.9, tau 0.25, "
          "alpha 0.1, stopped at the estimated noise level); *adaptive*: the same with "
-         "`adaptive_neighborhood_size(true)`; *in place*: the same with `in_place_updates(true)` (the authors' "
+         "`adaptive_neighborhood_size(true)`; *(a\\*, b\\*) vote*: the same with `optimal_vote_weights(true)`, "
+         "stage 1's votes weighted by each point's optimal sigmoid; *in place*: the same with `in_place_updates(true)` (the authors' "
          "Gauss-Seidel order); *authors' stage 3*: `authors_vertex_update(true)` and `rank_threshold(0)`, the "
          "authors' vertex update; *jet*: `jet_smooth_point_set()`, k = 18; *bilateral*: "
          "`bilateral_smooth_point_set()`, k = 18, sharpness angle 25 degrees, 3 iterations.\n\n";

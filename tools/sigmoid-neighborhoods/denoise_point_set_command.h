@@ -36,7 +36,7 @@ inline const char* DENOISE_POINT_SET_USAGE =
   "usage: sigmoid-neighborhoods denoise INPUT -o OUTPUT [--adaptive] [--iterations 50] [--cut-off 0.9]\n"
   "         [--eigenvalue-threshold 0.25] [--damping 3] [--radius R] [--size-range 10] [--step 0.1]\n"
   "         [--max-deviation E] [--weight-radius R] [--rank-threshold 0.1] [--authors-update] [--no-stop]\n"
-  "         [--in-place] [--threads N] [normals]\n"
+  "         [--in-place] [--optimal-vote] [--threads N] [normals]\n"
   "  Yadav et al. 2018: per iteration, normal filtering, corner/edge/planar classification, vertex update\n"
   "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply; normals estimated when absent)\n"
   "  OUTPUT: .xyz or .pwn (x y z nx ny nz), .ply (binary point cloud with normals); for a mesh INPUT\n"
@@ -50,7 +50,8 @@ inline const char* DENOISE_POINT_SET_USAGE =
   "  --rank-threshold: edge and corner solves drop directions of relative eigenvalue below it (0: none)\n"
   "  --authors-update: stage 3 as the authors' code (unweighted metrics, full steps, normal term in r)\n"
   "  --in-place: stages 2 and 3 update in place in input order (the authors' Gauss-Seidel), one thread\n"
-  "  --adaptive: every point picks its k in {k_i - R, ..., k_i + R} of least E_dim (SPEC §7)\n";
+  "  --adaptive: every point picks its k in {k_i - R, ..., k_i + R} of least E_dim (SPEC §7)\n"
+  "  --optimal-vote: stage 1's votes weighted by each point's optimal sigmoid (a*, b*) (beyond the paper)\n";
 
 typedef CGAL::Surface_mesh<SN::Oriented_point_set::Point_3> Denoise_tool_mesh;
 
@@ -89,11 +90,12 @@ auto denoising_parameters(const Filter_options& f, const Arguments& args, const 
     SNP::authors_vertex_update(args.has("--authors-update"),
     SNP::stop_at_noise_level(!args.has("--no-stop"),
     SNP::in_place_updates(args.has("--in-place"),
+    SNP::optimal_vote_weights(args.has("--optimal-vote"),
     SNP::line_angles(f.line_angles, SNP::number_of_threads(f.threads, SNP::normal_cut_off(f.cut_off,
     SNP::eigenvalue_threshold(f.eigenvalue_threshold, SNP::damping_factor(f.damping,
     SNP::adaptive_neighborhood_size(f.adaptive, SNP::neighborhood_size_range(f.size_range,
     SNP::angle_tolerance(f.angle_tolerance,
-      np.number_of_iterations(f.iterations).neighbor_radius(f.radius))))))))))))))));
+      np.number_of_iterations(f.iterations).neighbor_radius(f.radius)))))))))))))))));
 }
 
 inline std::string denoising_summary_text(const SN::Point_set_denoising_summary& s)
@@ -132,7 +134,7 @@ inline int run_denoise_point_set(int argc, char** argv)
     with_normal_options({"-o", "--output", "--iterations", "--cut-off", "--eigenvalue-threshold", "--damping", "--radius",
                          "--size-range", "--angle-tolerance", "--threads", "--step", "--max-deviation",
                          "--rank-threshold", "--weight-radius"}),
-    with_normal_flags({"-h", "--help", "--adaptive", "--authors-update", "--no-stop", "--in-place"}),
+    with_normal_flags({"-h", "--help", "--adaptive", "--authors-update", "--no-stop", "--in-place", "--optimal-vote"}),
     NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, DENOISE_POINT_SET_USAGE))
   {

@@ -10,7 +10,9 @@
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Optimal_search.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Oriented_points.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Vertex_update.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/mesh_points.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
@@ -90,6 +92,7 @@ struct Point_set_denoising_summary
   double noise_estimate = 0.;      ///< the noise level `sigma` estimated from the input (see `stop_at_noise_level`)
   bool stopped_at_noise_level = false; ///< the iterations stopped when the displacement reached `sigma`
   bool interrupted = false;        ///< the callback asked to stop
+  std::size_t cut_off_votes = 0;   ///< with `optimal_vote_weights`: points without an optimum, which vote with the cut-off
   double mean_displacement = 0.;   ///< the mean distance of the output points to the input points
   double largest_displacement = 0.; ///< the largest such distance
   Normal_filter_summary normal_filter; ///< what stage 1 (the normal filter) did
@@ -109,6 +112,8 @@ struct Denoising_settings
   bool in_place = false;         // the authors' Gauss-Seidel order of stages 2 and 3, sequential
   bool authors_vertex_update = false;
   bool stop_at_noise_level = true;
+  bool optimal_vote_weights = false; // stage 1 votes with sig_{a*_i, b*_i} of the input
+  Search_settings search;            // the search of (a*_i, b*_i)
   std::function<bool(double)> callback;
 };
 
@@ -126,6 +131,9 @@ Denoising_settings denoising_settings(const NamedParameters& np)
   s.in_place = choose_parameter(get_parameter(np, internal_np::in_place_updates), false);
   s.authors_vertex_update = choose_parameter(get_parameter(np, internal_np::authors_vertex_update), false);
   s.stop_at_noise_level = choose_parameter(get_parameter(np, internal_np::stop_at_noise_level), true);
+  s.optimal_vote_weights = choose_parameter(get_parameter(np, internal_np::optimal_vote_weights), false);
+  if(s.optimal_vote_weights)
+    s.search = search_settings(np);
   s.callback = choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<bool(double)>());
   if(!(s.step_size >= 0. && std::isfinite(s.step_size)))
     throw std::invalid_argument("the step size must be finite and >= 0, got " + std::to_string(s.step_size));
@@ -234,6 +242,27 @@ Point_set_denoising_summary denoise_all(Oriented_points& input, const Neighbor_l
   catch(const std::invalid_argument& e)
   {
     throw std::invalid_argument(std::string("denoise_point_set(): ") + e.what());
+  }
+
+  if(s.optimal_vote_weights)
+  {
+    // Every point votes with the sigmoid of its optimal (a*, b*) on the input, where it has one.
+    std::vector<std::optional<Cosine_sigmoid>> weights(n);
+    try
+    {
+      optimal_search_all<ConcurrencyTag>(input, query, s.search,
+                                         [&](std::size_t i, const Optimal_sigmoid_neighborhood& r) {
+                                           if(!r.is_failure())
+                                             weights[i].emplace(r.a, r.b, s.filter.angle_tolerance);
+                                         });
+    }
+    catch(const std::invalid_argument& e)
+    {
+      throw std::invalid_argument(std::string("denoise_point_set(): optimal vote weights: ") + e.what());
+    }
+    for(const auto& w : weights)
+      summary.cut_off_votes += w ? 0 : 1;
+    filter->set_vote_weights(std::move(weights));
   }
 
   summary.maximum_deviation =
@@ -456,6 +485,16 @@ Point_set_denoising_summary denoise_all(Oriented_points& input, const Neighbor_l
       \cgalParamDescription{whether the iterations stop at the estimated noise level (above)}
       \cgalParamType{`bool`}
       \cgalParamDefault{`true`}
+    \cgalParamNEnd
+    \cgalParamNBegin{optimal_vote_weights}
+      \cgalParamDescription{an experiment beyond the paper: whether in stage 1 the neighbors of `i` vote
+        with the weights `sig_{a*_i, b*_i}(angle(n_i, n_j))` of the point's optimal `(a*, b*)` on the
+        input (`compute_optimal_sigmoid_neighborhoods()`, on the same kd-tree, with the search's
+        named parameters `k_min`, `k_max`, `a_grid`, `b_grid`), `T = sum w_j n_j n_j^T / sum w_j`,
+        instead of the binary cut-off `rho`; a point where every triple is degenerate keeps the cut-off}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`false`}
+      \cgalParamExtra{needs at least `k_max + 1` points, otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{callback}
       \cgalParamDescription{called after every iteration with the fraction of `number_of_iterations`

@@ -129,21 +129,34 @@ Normal_filter_settings normal_filter_settings(const NamedParameters& np)
 }
 
 // One damped update n_i <- normalize(T~ n_i + d n_i) from the normal voting tensor of the neighbors
-// that vote (n_i * n_j > cut-off, or all of them with `equal_weights`), yadav-normal-filtering.md §3.
+// that vote (n_i * n_j > cut-off, or all of them with `equal_weights`), yadav-normal-filtering.md §3;
+// with `sigmoid`, every neighbor votes with the weight sigmoid(angle(n_i, n_j)) instead.
 // Returns false, with `result = n_i`, when no neighbor votes (or the update vanishes, d = 0).
 template <typename Iterator, typename IndexOf>
 bool voting_tensor_update(const std::vector<Eigen::Vector3d>& normals, std::size_t i, Iterator begin, Iterator end,
                           IndexOf index_of, bool equal_weights, const Normal_filter_settings& s,
-                          Eigen::Vector3d& result)
+                          Eigen::Vector3d& result, const Cosine_sigmoid* sigmoid = nullptr)
 {
   const Eigen::Vector3d& n = normals[i];
   Eigen::Matrix3d tensor = Eigen::Matrix3d::Zero();
   std::size_t count = 0;
+  double total = 0.;
   for(Iterator it = begin; it != end; ++it)
   {
     const Eigen::Vector3d& m = normals[index_of(*it)];
     const double c = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
-    if(equal_weights || (s.line_angles ? std::abs(c) : c) > s.cut_off)
+    const double cosine = s.line_angles ? std::abs(c) : c;
+    if(sigmoid != nullptr && !equal_weights)
+    {
+      const double w = sigmoid->weight_from_cosine(cosine);
+      if(w > 0.)
+      {
+        tensor.noalias() += w * (m * m.transpose());
+        total += w;
+        ++count;
+      }
+    }
+    else if(equal_weights || cosine > s.cut_off)
     {
       tensor.noalias() += m * m.transpose();
       ++count;
@@ -152,7 +165,7 @@ bool voting_tensor_update(const std::vector<Eigen::Vector3d>& normals, std::size
   result = n;
   if(count == 0)
     return false;
-  tensor /= double(count);
+  tensor /= sigmoid != nullptr && !equal_weights ? total : double(count);
   // Eigenvalues ascending: index 2 is the largest, always kept; the others when >= tau.
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(tensor, Eigen::ComputeEigenvectors);
   const Eigen::Vector3d& lambda = solver.eigenvalues();
@@ -236,6 +249,10 @@ public:
     m_fallbacks.assign(n, 0);
   }
 
+  // Every point votes with its own weights sigmoid_i(angle) instead of the cut-off; a point without one
+  // (empty optional) keeps the cut-off.
+  void set_vote_weights(std::vector<std::optional<Cosine_sigmoid>> weights) { m_vote_weights = std::move(weights); }
+
   // The neighborhoods Omega_i: the balls or the caller's.
   const Neighbor_lists& omega() const { return m_given != nullptr ? *m_given : m_ball; }
 
@@ -272,8 +289,11 @@ public:
       n, s.threads, [] { return Scratch(); },
       [&](std::size_t i, Scratch& scratch) {
         bool voted = false;
+        const Cosine_sigmoid* vote_weights =
+          m_vote_weights.empty() || !m_vote_weights[i] ? nullptr : &*m_vote_weights[i];
         if(!s.adaptive)
-          voted = voting_tensor_update(normals, i, omega.begin(i), omega.end(i), own_index, false, s, m_next[i]);
+          voted = voting_tensor_update(normals, i, omega.begin(i), omega.end(i), own_index, false, s, m_next[i],
+                                       vote_weights);
         else
         {
           // The size of least E_dim with the cut-off weights a = b = arccos(rho) of the current
@@ -310,7 +330,8 @@ public:
           else
           {
             m_selected_sizes[i] += m_chosen[i];
-            voted = voting_tensor_update(normals, i, found, found + m_chosen[i], own_index, false, s, m_next[i]);
+            voted = voting_tensor_update(normals, i, found, found + m_chosen[i], own_index, false, s, m_next[i],
+                                         vote_weights);
           }
         }
         if(!voted)
@@ -354,6 +375,7 @@ private:
   std::vector<std::uint64_t> m_selected_sizes;
   std::vector<std::uint32_t> m_fallbacks, m_empty_cones;
   std::vector<Eigen::Vector3d> m_next;
+  std::vector<std::optional<Cosine_sigmoid>> m_vote_weights;
 };
 
 // The sweeps of the filter on `input` (normals replaced), with the ball neighborhoods or `given`.

@@ -79,6 +79,7 @@ CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(rank_threshold_t, rank_threshold)
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(in_place_updates_t, in_place_updates)
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(authors_vertex_update_t, authors_vertex_update)
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(stop_at_noise_level_t, stop_at_noise_level)
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(optimal_vote_weights_t, optimal_vote_weights)
 /// \endcond
 
 #undef CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER

@@ -191,6 +191,8 @@ inline std::vector<Method_result> compare_denoisers(const std::vector<Denoise_it
   namespace SNP = SN::parameters;
   package("package", SNP::number_of_threads(threads));
   package("package, adaptive", SNP::adaptive_neighborhood_size(true, SNP::number_of_threads(threads)));
+  // beyond the paper: every point's optimal sigmoid (a*, b*) weighs its votes
+  package("package, (a*, b*) vote", SNP::optimal_vote_weights(true, SNP::number_of_threads(threads)));
   // the authors' order of stages 2 and 3 (Gauss-Seidel), and the authors' stage 3 itself
   package("package, in place", SNP::in_place_updates(true, SNP::number_of_threads(threads)));
   package("authors' stage 3", SNP::authors_vertex_update(true, SNP::rank_threshold(0., SNP::number_of_threads(threads))));
