@@ -519,28 +519,13 @@ denoise_point_set(PointRange& points, const CGAL_NP_CLASS& np = CGAL::parameters
 {
   typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
   static_assert(NP_helper::has_normal_map(), "denoise_point_set() needs a normal map");
-  using CGAL::parameters::get_parameter_reference;
-  using CGAL::parameters::is_default_parameter;
   const auto point_map = NP_helper::get_point_map(points, np);
   const auto normal_map = NP_helper::get_normal_map(points, np);
   auto input = internal::copy_oriented_points(points, point_map, normal_map, internal::line_angles(np));
   const internal::Denoising_settings settings = internal::denoising_settings(np);
-  Point_set_denoising_summary summary;
-  if constexpr(!is_default_parameter<CGAL_NP_CLASS, internal_np::neighborhoods_t>::value)
-  {
-    const internal::Neighbor_lists given =
-      internal::neighbor_lists(get_parameter_reference(np, internal_np::neighborhoods), input.size());
-    summary = internal::denoise_all<ConcurrencyTag>(input, &given, settings);
-  }
-  else if constexpr(!is_default_parameter<CGAL_NP_CLASS, internal_np::neighbor_indices_t>::value)
-  {
-    const internal::Neighbor_lists given =
-      internal::neighbor_lists(get_parameter_reference(np, internal_np::neighbor_indices),
-                               get_parameter_reference(np, internal_np::neighbor_offsets), input.size());
-    summary = internal::denoise_all<ConcurrencyTag>(input, &given, settings);
-  }
-  else
-    summary = internal::denoise_all<ConcurrencyTag>(input, nullptr, settings);
+  const std::optional<internal::Neighbor_lists> given = internal::given_neighborhoods(np, input.size());
+  const Point_set_denoising_summary summary =
+    internal::denoise_all<ConcurrencyTag>(input, given ? &*given : nullptr, settings);
   typedef typename boost::property_traits<typename NP_helper::Point_map>::value_type Point;
   typedef typename boost::property_traits<typename NP_helper::Normal_map>::value_type Vector;
   std::size_t i = 0;

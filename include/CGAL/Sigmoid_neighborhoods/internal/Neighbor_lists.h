@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -120,6 +121,22 @@ Neighbor_lists neighbor_lists(const Indices& indices, const Offsets& offsets, st
 template <typename Indices, typename Offsets>
 constexpr bool is_native_rows = std::is_same<Indices, std::vector<std::uint32_t>>::value &&
                                 std::is_same<Offsets, std::vector<std::size_t>>::value;
+
+// The caller's neighborhoods of the named parameters `neighborhoods` (one list per point) or
+// `neighbor_indices` and `neighbor_offsets` (compressed rows), checked; none when neither is given.
+template <typename NamedParameters>
+std::optional<Neighbor_lists> given_neighborhoods(const NamedParameters& np, std::size_t n)
+{
+  using CGAL::parameters::get_parameter_reference;
+  using CGAL::parameters::is_default_parameter;
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::neighborhoods_t>::value)
+    return neighbor_lists(get_parameter_reference(np, internal_np::neighborhoods), n);
+  else if constexpr(!is_default_parameter<NamedParameters, internal_np::neighbor_indices_t>::value)
+    return neighbor_lists(get_parameter_reference(np, internal_np::neighbor_indices),
+                          get_parameter_reference(np, internal_np::neighbor_offsets), n);
+  else
+    return std::nullopt;
+}
 
 template <typename NamedParameters>
 Neighbor_query neighbor_query(const std::vector<Double_point>& points, const NamedParameters& np)
