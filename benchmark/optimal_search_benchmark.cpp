@@ -5,6 +5,7 @@
 //  (a) CGAL's Classification::Local_eigen_analysis at k = 20 (plain PCA features),
 //  (b) the plain loop: every one of the 420 triples, one covariance and one eigen solve each,
 //  (c) the package's optimal search, (d) the package's features for one fixed (a, b, k),
+//  (e) the equal-weights search (a_grid = b_grid = {pi}: the best k alone, Weinmann's optimal size),
 // and checks that (b) and (c) give the same (a*, b*, k*, E) on every point.
 //
 //   optimal_search_benchmark [--points N] [--threads T] [--data sphere|fandisk|scan|all]
@@ -331,6 +332,17 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
       }), np);
     return checksum;
   });
+  // (e) equal weights only: the best k of SPEC §5 with a = b = pi
+  const std::vector<double> pi{CGAL_PI};
+  const auto equal_np = SN::parameters::a_grid(pi, SN::parameters::b_grid(pi, np));
+  const Measure e = measure(repeat, [&] {
+    double checksum = 0.;
+    SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(
+      indices, boost::make_function_output_iterator([&](const SN::Optimal_sigmoid_neighborhood& r) {
+        checksum += r.k;
+      }), equal_np);
+    return checksum;
+  });
   // (d) one fixed triple
   const Measure d = measure(repeat, [&] {
     std::vector<SN::Dimensionality_features> features;
@@ -350,21 +362,25 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
     // (a*, b*, k*, E) of (b) and (c) on every point: the number of points where they differ
     const Measure check = measure([&] {
       const auto plain = plain_loop(data, unsigned(threads));
-      std::vector<SN::Optimal_sigmoid_neighborhood> optimal;
+      std::vector<SN::Optimal_sigmoid_neighborhood> optimal, equal;
       SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(indices, std::back_inserter(optimal), np);
+      SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(indices, std::back_inserter(equal), equal_np);
       std::size_t differ = 0;
       for(std::size_t i = 0; i < n; ++i)
       {
         const auto &p = plain[i], &o = optimal[i];
         const bool same = p.k == o.k && (p.k == 0 || (p.a == o.a && p.b == o.b)) &&
                           std::memcmp(&p.features.error, &o.features.error, sizeof(double)) == 0;
-        differ += !same;
+        // (e) is (c)'s equal-weights part
+        const bool same_equal = equal[i].k == o.k_equal &&
+                                std::memcmp(&equal[i].features.error, &o.error_equal, sizeof(double)) == 0;
+        differ += !same || !same_equal;
       }
       return double(differ);
     });
     identical = check.value == 0. ? "yes" : "no";
     if(check.value != 0.)
-      std::printf("  (b) and (c) differ on %.0f points\n", check.value);
+      std::printf("  (b) and (c), or (c) and (e), differ on %.0f points\n", check.value);
   }
   auto rate = [n](const Measure& m) { return m.seconds > 0 ? double(n) / m.seconds : 0.; };
   std::printf("%s, %zu points (%s order), %d threads\n", data.name.c_str(), n, data.order.c_str(), threads);
@@ -374,11 +390,14 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
   std::printf("  (c) optimal search:                 %10.0f points/s (%.2f s), %.0f bytes/point above the input\n",
               rate(c), c.seconds, c.extra_bytes / double(n));
   std::printf("  (d) features, one (a, b, k):        %10.0f points/s (%.2f s)\n", rate(d), d.seconds);
+  std::printf("  (e) equal-weights search, 15 sizes: %10.0f points/s (%.2f s), %.0f bytes/point above the input\n",
+              rate(e), e.seconds, e.extra_bytes / double(n));
   std::printf("  k-NN share of (c): %.1f %% (%.2f s for one 20-NN query per point)\n",
               100. * knn.seconds / c.seconds, knn.seconds);
   std::printf("  input %.1f MB, (c) peak %.1f MB above it\n", input_bytes / 1e6, c.extra_bytes / 1e6);
-  std::printf("summary: data=%s points=%zu threads=%d optimal_over_cgal_pca=%.2f plain_over_optimal=%s identical=%s\n",
-              data.name.c_str(), n, threads, c.seconds / a.seconds,
+  std::printf("summary: data=%s points=%zu threads=%d optimal_over_cgal_pca=%.2f equal_over_cgal_pca=%.2f "
+              "plain_over_optimal=%s identical=%s\n",
+              data.name.c_str(), n, threads, c.seconds / a.seconds, e.seconds / a.seconds,
               with_plain ? std::to_string(b.seconds / c.seconds).c_str() : "nan", identical.c_str());
   std::fflush(stdout);
 }

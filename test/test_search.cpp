@@ -269,6 +269,38 @@ TEST_CASE("optimal search equals the plain loop over all 420 triples", "[optimal
   }
 }
 
+TEST_CASE("equal weights alone: the search is the full search's equal-weights part", "[optimal][equal]")
+{
+  // a = b = pi only: no angle is computed and the one scan gives both records
+  const Point_list points = folded_sheet(15, 1);
+  const std::vector<double> pi{CGAL_PI};
+  for(auto bary : {SN::Barycenter::WEIGHTED, SN::Barycenter::UNWEIGHTED})
+  {
+    const auto full = optimal(points, bary);
+    std::vector<SN::Optimal_sigmoid_neighborhood> equal;
+    SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(
+      points, std::back_inserter(equal),
+      SNP::a_grid(pi, SNP::b_grid(pi, SNP::barycenter(bary))).point_map(Point_map()).normal_map(Normal_map()));
+    REQUIRE(equal.size() == full.size());
+    std::size_t sizes_differ = 0;
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      const auto& e = equal[i];
+      CHECK(e.a == CGAL_PI);
+      CHECK(e.b == CGAL_PI);
+      CHECK(e.k == full[i].k_equal);
+      CHECK(std::memcmp(&e.features.error, &full[i].error_equal, sizeof(double)) == 0);
+      CHECK(e.k_equal == e.k);
+      CHECK(std::memcmp(&e.error_equal, &e.features.error, sizeof(double)) == 0);
+      // the features are those of a plain evaluation at (pi, pi, k)
+      const auto plain = plain_features(points, i, CGAL_PI, CGAL_PI, e.k, bary);
+      CHECK(std::memcmp(&e.features.error, &plain.error, sizeof(double)) == 0);
+      sizes_differ += (e.k != full[i].k);
+    }
+    CHECK(sizes_differ > 0); // the sheet's folds make the weighted optimum differ somewhere
+  }
+}
+
 TEST_CASE("optimal search equals the plain loop where band weights round to 0 and 1", "[optimal][sigmoid]")
 {
   // Normal angles within 1e-10 of the grid's values: inside the transition band of some pairs,

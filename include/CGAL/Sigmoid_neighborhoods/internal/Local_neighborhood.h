@@ -36,7 +36,9 @@ namespace internal {
 class Local_neighborhood
 {
 public:
-  void assign(const Oriented_points& input, std::uint32_t i, const std::vector<Neighbor>& neighbors)
+  // `with_angles` false leaves every angle 0: for callers whose every weight is 1 whatever the angle.
+  void assign(const Oriented_points& input, std::uint32_t i, const std::vector<Neighbor>& neighbors,
+              bool with_angles = true)
   {
     const std::size_t m = neighbors.size() + 1;
     m_offsets.resize(m);
@@ -53,7 +55,9 @@ public:
       const std::uint32_t index = neighbors[j - 1].index;
       const Double_point& q = input.points[index];
       m_offsets[j] = Eigen::Vector3d(q.x() - p.x(), q.y() - p.y(), q.z() - p.z());
-      m_angles[j] = input.line_angles ? normal_line_angle(n, input.normals[index]) : normal_angle(n, input.normals[index]);
+      m_angles[j] = !with_angles       ? 0.
+                    : input.line_angles ? normal_line_angle(n, input.normals[index])
+                                        : normal_angle(n, input.normals[index]);
       m_largest_angle = (std::max)(m_largest_angle, m_angles[j]);
       m_squared_radius[j] = (std::max)(m_squared_radius[j - 1], m_offsets[j].squaredNorm());
     }
@@ -153,11 +157,12 @@ private:
 
 // Runs `compute(i, local, scratch)` on the neighborhood N_i(k) of every point i from the shared
 // `query`, one `scratch` per thread from `make_scratch()`, and passes the results to
-// `sink(i, result)` in index order, a block at a time (for_each_index_in_blocks()).
+// `sink(i, result)` in index order, a block at a time (for_each_index_in_blocks()). `with_angles`:
+// see Local_neighborhood::assign().
 template <typename ConcurrencyTag, typename Result, typename MakeScratch, typename Compute, typename Sink>
 void for_each_neighborhood(const Oriented_points& input, const Neighbor_query& query, unsigned int k,
                            unsigned int threads, const MakeScratch& make_scratch, const Compute& compute,
-                           const Sink& sink)
+                           const Sink& sink, bool with_angles = true)
 {
   typedef decltype(make_scratch()) Inner;
   struct Scratch
@@ -170,7 +175,7 @@ void for_each_neighborhood(const Oriented_points& input, const Neighbor_query& q
     input.size(), threads, [&make_scratch] { return Scratch{{}, {}, make_scratch()}; },
     [&](std::size_t i, Scratch& s) {
       query.query(static_cast<std::uint32_t>(i), k, s.neighbors);
-      s.local.assign(input, static_cast<std::uint32_t>(i), s.neighbors);
+      s.local.assign(input, static_cast<std::uint32_t>(i), s.neighbors, with_angles);
       return compute(i, static_cast<const Local_neighborhood&>(s.local), s.inner);
     },
     sink);

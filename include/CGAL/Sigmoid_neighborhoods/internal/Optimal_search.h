@@ -92,6 +92,9 @@ public:
         m_equal_pair = static_cast<int>(p);
   }
 
+  // false when every pair has equal weights (a = b = pi): no angle is needed
+  bool needs_angles() const { return m_equal_pair < 0 || m_sigmoids.size() > 1; }
+
   Scratch make_scratch() const
   {
     Scratch s;
@@ -151,7 +154,13 @@ public:
     }
 
     // Equal weights, best k with the same tie rule.
-    if(m_equal_pair >= 0)
+    if(m_equal_pair >= 0 && pairs == 1)
+    {
+      // the scan above was that search
+      result.error_equal = result.features.error;
+      result.k_equal = result.k;
+    }
+    else if(m_equal_pair >= 0)
     {
       if(std::size_t(m_equal_pair) >= prepared)
         prepare(s, std::size_t(m_equal_pair), prepared);
@@ -369,10 +378,12 @@ private:
     // arguments are padded to a whole batch); in the band the cosine, clamped to [0, 1] where the
     // exact weights lie (so that no rounding makes one negative), on the band's arguments gathered
     // into whole batches: a rough surface has a few per pair, and the cosine is the costly part.
+    // (t + 2) clamped to [0, 1] is 1 for WEIGHT_ONE (-1), 0 for WEIGHT_ZERO (-2), and is replaced
+    // in the band: min and max vectorize, Eigen 3.4's select on a comparison does not.
+    static_assert(Cosine_sigmoid::WEIGHT_ONE == -1. && Cosine_sigmoid::WEIGHT_ZERO == -2., "the clamp below");
     double* const w = s.approximate_weights.data();
     for(std::size_t j = 0; j < weight_stride(); j += Batch::SizeAtCompileTime)
-      Eigen::Map<Batch>(w + j) =
-        (Eigen::Map<const Batch>(t + j) == Cosine_sigmoid::WEIGHT_ONE).select(Batch::Ones(), Batch::Zero());
+      Eigen::Map<Batch>(w + j) = (Eigen::Map<const Batch>(t + j) + 2.).min(1.).max(0.);
     double* const band_arguments = s.band_arguments.data();
     std::uint32_t* const band_indices = s.band_indices.data();
     std::size_t band_size = 0;
@@ -498,11 +509,13 @@ private:
       if(j < k_min)
         continue;
       const std::size_t c = j - k_min;
+      column(RADIUS)[c] = local.unit_squared_radius(j);
+      if(m_settings.barycenter == Barycenter::WEIGHTED)
+        continue; // the barycenters are the pair's
       const double inverse_size = 1. / double(j + 1);
       column(UX)[c] = sum[0] * inverse_size;
       column(UY)[c] = sum[1] * inverse_size;
       column(UZ)[c] = sum[2] * inverse_size;
-      column(RADIUS)[c] = local.unit_squared_radius(j);
     }
   }
 
@@ -580,7 +593,7 @@ void optimal_search_all(const Oriented_points& input, const Neighbor_query& quer
   for_each_neighborhood<ConcurrencyTag, Optimal_sigmoid_neighborhood>(
     input, query, settings.k_max, settings.threads, [&search] { return search.make_scratch(); },
     [&search](std::size_t, const Local_neighborhood& local, Optimal_search::Scratch& s) { return search(local, s); },
-    sink);
+    sink, search.needs_angles());
 }
 
 } // namespace internal
