@@ -42,6 +42,37 @@ inline bool is_nearer(const Neighbor& x, const Neighbor& y)
   return x.squared_distance < y.squared_distance || (x.squared_distance == y.squared_distance && x.index < y.index);
 }
 
+// Sorts by is_nearer(). A k-NN result (a few dozen neighbors, in the tree's heap order) is placed
+// by rank, each neighbor's rank the number of neighbors nearer than it: comparisons without
+// branches, where std::sort's mispredicted ones took a quarter of the query's time on a scan.
+// Indices are distinct, so the ranks are a permutation.
+inline void sort_by_nearness(std::vector<Neighbor>& neighbors)
+{
+  constexpr std::size_t RANKED = 64;
+  const std::size_t m = neighbors.size();
+  if(m > RANKED)
+  {
+    std::sort(neighbors.begin(), neighbors.end(), is_nearer);
+    return;
+  }
+  double distance[RANKED];
+  std::uint32_t index[RANKED];
+  Neighbor sorted[RANKED];
+  for(std::size_t e = 0; e < m; ++e)
+  {
+    distance[e] = neighbors[e].squared_distance;
+    index[e] = neighbors[e].index;
+  }
+  for(std::size_t e = 0; e < m; ++e)
+  {
+    std::size_t rank = 0;
+    for(std::size_t f = 0; f < m; ++f)
+      rank += std::size_t((distance[f] < distance[e]) | ((distance[f] == distance[e]) & (index[f] < index[e])));
+    sorted[rank] = neighbors[e];
+  }
+  std::copy(sorted, sorted + m, neighbors.begin());
+}
+
 // The point of an index, for CGAL's kd-trees over indices (Search_traits_adapter).
 struct Index_to_point_map
 {
@@ -162,7 +193,7 @@ public:
       Search search(m_tree, m_points[i], static_cast<unsigned int>(asked), 0., true, Distance(m_map), false);
       for(const auto& found : search)
         result.push_back(Neighbor{found.first, found.second});
-      std::sort(result.begin(), result.end(), is_nearer);
+      sort_by_nearness(result);
       const double farthest = result.empty() ? 0. : result.back().squared_distance;
       result.erase(std::remove_if(result.begin(), result.end(),
                                   [i](const Neighbor& x) { return x.index == i; }),
@@ -184,7 +215,7 @@ public:
     result.clear();
     const Sphere sphere(i, radius * (1. + BALL_SEARCH_MARGIN), 0., m_traits);
     m_tree.search(boost::make_function_output_iterator(Ball_collector{&m_points, i, radius * radius, &result}), sphere);
-    std::sort(result.begin(), result.end(), is_nearer);
+    sort_by_nearness(result);
   }
 
   std::size_t size() const { return m_points.size(); }
