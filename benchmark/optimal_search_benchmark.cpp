@@ -149,7 +149,11 @@ void put_in_hilbert_order(Data& d)
 
 Data scan(const std::string& file)
 {
-  const SN::Oriented_point_set s = SN::read_oriented_point_set(file);
+  // One thread: a file without normals has them estimated here, in the parent, and OpenMP threads
+  // started before a fork() would leave the measuring child waiting for them forever.
+  SN::Normal_options options;
+  options.threads = 1;
+  const SN::Oriented_point_set s = SN::read_oriented_point_set(file, options);
   return Data{std::filesystem::path(file).filename().string(), s.points, s.normals};
 }
 
