@@ -327,26 +327,23 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
                                                         SN::parameters::number_of_threads(unsigned(threads)));
     return double(rows.size());
   });
-  // (c) the optimal search. The records are consumed as they come: the memory measured is the library's own.
-  const Measure c = measure(repeat, [&] {
-    double checksum = 0.;
-    SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(
-      indices, boost::make_function_output_iterator([&](const SN::Optimal_sigmoid_neighborhood& r) {
-        checksum += r.k;
-      }), np);
-    return checksum;
-  });
+  // A search with `search_np`. The records are consumed as they come: the memory measured is the library's own.
+  auto measure_search = [&](const auto& search_np) {
+    return measure(repeat, [&] {
+      double checksum = 0.;
+      SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(
+        indices, boost::make_function_output_iterator([&](const SN::Optimal_sigmoid_neighborhood& r) {
+          checksum += r.k;
+        }), search_np);
+      return checksum;
+    });
+  };
+  // (c) the optimal search
+  const Measure c = measure_search(np);
   // (e) equal weights only: the best k of SPEC §5 with a = b = pi
   const std::vector<double> pi{CGAL_PI};
   const auto equal_np = SN::parameters::a_grid(pi, SN::parameters::b_grid(pi, np));
-  const Measure e = measure(repeat, [&] {
-    double checksum = 0.;
-    SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(
-      indices, boost::make_function_output_iterator([&](const SN::Optimal_sigmoid_neighborhood& r) {
-        checksum += r.k;
-      }), equal_np);
-    return checksum;
-  });
+  const Measure e = measure_search(equal_np);
   // (d) one fixed triple
   const Measure d = measure(repeat, [&] {
     std::vector<SN::Dimensionality_features> features;
