@@ -59,6 +59,26 @@ inline std::vector<double> parse_noise_levels(const std::string& text)
   return levels;
 }
 
+// "5,10,20": positive iteration counts, at most Arguments::LARGEST_UNSIGNED_OPTION each
+inline std::vector<unsigned int> parse_iteration_counts(const std::string& text)
+{
+  std::vector<unsigned int> counts;
+  std::stringstream in(text);
+  std::string item;
+  while(std::getline(in, item, ','))
+  {
+    char* end = nullptr;
+    errno = 0;
+    const long v = std::strtol(item.c_str(), &end, 10);
+    if(item.empty() || *end != '\0' || errno != 0 || v < 1 || v > Arguments::LARGEST_UNSIGNED_OPTION)
+      throw Usage_error("--fixed-iterations needs positive integers separated by commas, got '" + text + "'");
+    counts.push_back(static_cast<unsigned int>(v));
+  }
+  if(counts.empty())
+    throw Usage_error("--fixed-iterations needs at least one count");
+  return counts;
+}
+
 inline std::uint64_t parse_seed(const std::string& text)
 {
   char* end = nullptr;

@@ -26,7 +26,7 @@ namespace sigmoid_tool {
 
 inline const char* DENOISE_COMPARISON_USAGE =
   "usage: sigmoid-neighborhoods denoise-comparison [MODELS...] -o DIR [--noise 0.3,0.6] [--seed 1]\n"
-  "         [--data DIR] [--fandisk FILE] [--figure-model NAME] [--threads N]\n"
+  "         [--data DIR] [--fandisk FILE] [--figure-model NAME] [--fixed-iterations N,...] [--threads N]\n"
   "  MODELS: names (cube octahedron fandisk sharp_sphere rockerarm fertility bearing: as denoise-experiment;\n"
   "          yadav_fandisk: Yadav et al.'s noisy fandisk against the clean one, both in --data DIR) or mesh\n"
   "          files; default: cube octahedron fandisk sharp_sphere rockerarm fertility yadav_fandisk and the CAD\n"
@@ -35,6 +35,8 @@ inline const char* DENOISE_COMPARISON_USAGE =
   "  normals and isotropically, PCA normals on 12 neighbors oriented like the clean ones, then: the\n"
   "  package's denoise_point_set (defaults; adaptive; (a*, b*) vote; in place; the authors' stage 3), CGAL's jet_smooth_point_set (k 18) and\n"
   "  bilateral_smooth_point_set (k 18, sharpness 25 degrees, 3 iterations)\n"
+  "  --fixed-iterations: references, the package's defaults without the stopping rule after each of these\n"
+  "          iteration counts (not ranked, not drawn: what the best stopping rule could give)\n"
   "  writes DIR/denoising.md, DIR/denoising.csv, DIR/denoising_points.csv and DIR/denoising.png\n";
 
 // The CAD models of the default run beyond the named ones: files that exist are used.
@@ -100,7 +102,15 @@ inline void write_comparison_table(std::ostream& out, const std::vector<Comparis
          "stage 1's votes weighted by each point's optimal sigmoid; *in place*: the same with `in_place_updates(true)` (the authors' "
          "Gauss-Seidel order); *authors' stage 3*: `authors_vertex_update(true)` and `rank_threshold(0)`, the "
          "authors' vertex update; *jet*: `jet_smooth_point_set()`, k = 18; *bilateral*: "
-         "`bilateral_smooth_point_set()`, k = 18, sharpness angle 25 degrees, 3 iterations.\n\n";
+         "`bilateral_smooth_point_set()`, k = 18, sharpness angle 25 degrees, 3 iterations.";
+  for(const auto& m : rows.front().methods)
+    if(m.reference)
+    {
+      out << " *package, N iterations*: the defaults without the stopping rule, N iterations: references "
+             "(what the best stopping rule could give), not ranked.";
+      break;
+    }
+  out << "\n\n";
   const std::vector<Method_result>& first = rows.front().methods;
   out << "| model | noise | points |";
   for(const auto& m : first)
@@ -129,7 +139,7 @@ inline void write_comparison_table(std::ostream& out, const std::vector<Comparis
   {
     std::size_t best = 1;
     for(std::size_t i = 1; i < r.methods.size(); ++i)
-      if(r.methods[i].mean_distance < r.methods[best].mean_distance)
+      if(!r.methods[i].reference && r.methods[i].mean_distance < r.methods[best].mean_distance)
         best = i;
     out << "| " << r.model << " | " << r.noise << " | " << r.points << " |";
     for(std::size_t i = 0; i < r.methods.size(); ++i)
@@ -173,7 +183,8 @@ inline void write_comparison_csv(std::ostream& out, const std::vector<Comparison
 inline int run_denoise_comparison(int argc, char** argv)
 {
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT,
-                       {"-o", "--output", "--noise", "--seed", "--data", "--fandisk", "--figure-model", "--threads"},
+                       {"-o", "--output", "--noise", "--seed", "--data", "--fandisk", "--figure-model",
+                        "--fixed-iterations", "--threads"},
                        {"-h", "--help"});
   if(print_help(args, DENOISE_COMPARISON_USAGE))
     return EXIT_OK;
@@ -185,6 +196,9 @@ inline int run_denoise_comparison(int argc, char** argv)
   const std::string data_dir = args.get("--data", default_application_data());
   const std::string fandisk = args.get("--fandisk", "");
   const unsigned int threads = read_threads(args);
+  std::vector<unsigned int> fixed_iterations;
+  if(args.has("--fixed-iterations"))
+    fixed_iterations = parse_iteration_counts(args.get("--fixed-iterations"));
   std::vector<std::string> names = args.positional();
   if(names.empty())
   {
@@ -292,7 +306,8 @@ inline int run_denoise_comparison(int argc, char** argv)
       row.points = clean.size();
       try
       {
-        row.methods = compare_denoisers(with_pca_normals(cases[c].second, truth, threads), truth, surface, threads);
+        row.methods = compare_denoisers(with_pca_normals(cases[c].second, truth, threads), truth, surface, threads,
+                                        fixed_iterations);
       }
       catch(const std::invalid_argument& e)
       {
@@ -308,7 +323,7 @@ inline int run_denoise_comparison(int argc, char** argv)
         std::ostringstream text;
         text << "method,x,y,z,distance\n";
         for(const auto& m : row.methods)
-          for(std::size_t i = 0; i < m.points.size(); ++i)
+          for(std::size_t i = 0; i < (m.reference ? 0 : m.points.size()); ++i)
             text << '"' << m.method << "\"," << number17(m.points[i].x()) << ',' << number17(m.points[i].y()) << ','
                  << number17(m.points[i].z()) << ',' << number17(m.distances[i] / spacing) << '\n';
         figure_text = text.str();

@@ -58,6 +58,9 @@ struct Method_result
   std::vector<double> distances; // per point
   std::vector<Denoise_point> points; // the method's output
   std::string note;
+  // A reference rather than a competitor (the package at a fixed iteration count, chosen by the
+  // user with the clean surface in hand): not ranked, not drawn.
+  bool reference = false;
 };
 
 // The noisy points of a clean model: in vertex order, with the clean normals.
@@ -153,9 +156,12 @@ inline double items_normal_mse(const std::vector<Denoise_item>& items, const std
 }
 
 // The methods of the comparison on one noisy model, in the order of the table.
+// `fixed_iterations`: references, the package's defaults without the stopping rule at each of these
+// iteration counts (what the best stopping rule could give).
 inline std::vector<Method_result> compare_denoisers(const std::vector<Denoise_item>& noisy,
                                                     const std::vector<Denoise_vector>& truth,
-                                                    const Surface_distance& surface, unsigned int threads)
+                                                    const Surface_distance& surface, unsigned int threads,
+                                                    const std::vector<unsigned int>& fixed_iterations = {})
 {
   const CGAL::First_of_pair_property_map<Denoise_item> point_map;
   const CGAL::Second_of_pair_property_map<Denoise_item> normal_map;
@@ -196,6 +202,12 @@ inline std::vector<Method_result> compare_denoisers(const std::vector<Denoise_it
   // the authors' order of stages 2 and 3 (Gauss-Seidel), and the authors' stage 3 itself
   package("package, in place", SNP::in_place_updates(true, SNP::number_of_threads(threads)));
   package("authors' stage 3", SNP::authors_vertex_update(true, SNP::rank_threshold(0., SNP::number_of_threads(threads))));
+  for(unsigned int n : fixed_iterations)
+  {
+    package("package, " + std::to_string(n) + " iterations",
+            SNP::stop_at_noise_level(false, SNP::number_of_threads(threads)).number_of_iterations(n));
+    results.back().reference = true;
+  }
   run("CGAL jet", false, [&](std::vector<Denoise_item>& items) {
     CGAL::jet_smooth_point_set<CGAL::Parallel_if_available_tag>(items, JET_SMOOTHING_NEIGHBORS,
                                                                 CGAL::parameters::point_map(point_map));
