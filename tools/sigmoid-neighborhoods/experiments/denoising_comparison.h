@@ -58,8 +58,8 @@ struct Method_result
   std::vector<double> distances; // per point
   std::vector<Denoise_point> points; // the method's output
   std::string note;
-  // A reference rather than a competitor (the package at a fixed iteration count, chosen by the
-  // user with the clean surface in hand): not ranked, not drawn.
+  // A reference rather than a competitor (the package at a fixed iteration count, which only the
+  // clean surface tells how to choose): not ranked, not drawn.
   bool reference = false;
 };
 
@@ -204,7 +204,7 @@ inline std::vector<Method_result> compare_denoisers(const std::vector<Denoise_it
   package("authors' stage 3", SNP::authors_vertex_update(true, SNP::rank_threshold(0., SNP::number_of_threads(threads))));
   for(unsigned int n : fixed_iterations)
   {
-    package("package, " + std::to_string(n) + " iterations",
+    package("package, " + std::to_string(n) + (n == 1 ? " iteration" : " iterations"),
             SNP::stop_at_noise_level(false, SNP::number_of_threads(threads)).number_of_iterations(n));
     results.back().reference = true;
   }
