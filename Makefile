@@ -6,20 +6,22 @@
 #   make test       # installs dependencies, builds, builds the manual, runs every test
 #   make doc        # the manual only: $(BUILD_DIR)/doc/html/index.html
 #   make denoising  # the denoiser against CGAL's smoothing: $(RESULTS_DIR)/denoising/
+#   make classification  # feature sets for semantic classification of lidar: $(RESULTS_DIR)/classification/
 
 BUILD_DIR ?= build
 RESULTS_DIR ?= results
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 DEBIAN_PACKAGES = g++ make cmake ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev \
-                  libgmp-dev libmpfr-dev libtbb-dev catch2 python3-matplotlib python3-numpy doxygen parallel
+                  libgmp-dev libmpfr-dev libtbb-dev libboost-serialization-dev libboost-iostreams-dev zlib1g-dev \
+                  nlohmann-json3-dev catch2 python3-matplotlib python3-numpy doxygen parallel
 # Only for `make test`: the viewer test opens the tool's PLY files in CloudCompare (headless).
 TEST_PACKAGES = cloudcompare
 CGAL_DATA_ARCHIVE = /usr/share/doc/libcgal-dev/data.tar.gz
 CORPUS_DIR = $(BUILD_DIR)/cgal-data
 TOOL = $(BUILD_DIR)/tools/sigmoid-neighborhoods/sigmoid-neighborhoods
 
-.PHONY: all deps test-deps configure build doc test sanitize fuzz evaluate corpus denoising clean
+.PHONY: all deps test-deps configure build doc test sanitize fuzz evaluate corpus denoising classification clean
 
 all: build
 
@@ -114,6 +116,18 @@ evaluate: build corpus
 denoising: build
 	@mkdir -p $(RESULTS_DIR)
 	$(TOOL) denoise-comparison -o $(RESULTS_DIR)/denoising --figure-model fandisk --seed 1
+
+# Semantic classification of the IGN LiDAR HD tiles of ../shared/data/labeled (train on the four
+# western tiles, test on the two eastern ones): every feature set in 10 feature orders, with and
+# without graph-cut; $(RESULTS_DIR)/classification/experiment.md.
+LABELED_DIR ?= ../shared/data/labeled
+IGN = $(LABELED_DIR)/ign_lidarhd_
+classification: build
+	@[ -d $(LABELED_DIR) ] || { echo "make classification needs $(LABELED_DIR) (the labeled IGN tiles)" >&2; exit 1; }
+	@mkdir -p $(RESULTS_DIR)
+	$(TOOL) classify experiment -o $(RESULTS_DIR)/classification \
+	  --train $(IGN)77050_627755.las,$(IGN)77050_627760.las,$(IGN)77055_627755.las,$(IGN)77055_627760.las \
+	  --test $(IGN)77060_627755.las,$(IGN)77060_627760.las
 
 clean:
 	rm -rf $(BUILD_DIR)

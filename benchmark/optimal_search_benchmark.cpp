@@ -6,6 +6,7 @@
 //  (b) the plain loop: every one of the 420 triples, one covariance and one eigen solve each,
 //  (c) the package's optimal search, (d) the package's features for one fixed (a, b, k),
 //  (e) the equal-weights search (a_grid = b_grid = {pi}: the best k alone, Weinmann's optimal size),
+//  (f) the optimal search with the classification features at each optimum (compute_optimal_point_features()),
 // and checks that (b) and (c) give the same (a*, b*, k*, E) on every point.
 //
 //   optimal_search_benchmark [--points N] [--threads T] [--data sphere|fandisk|scan|all]
@@ -344,6 +345,14 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
   const std::vector<double> pi{CGAL_PI};
   const auto equal_np = SN::parameters::a_grid(pi, SN::parameters::b_grid(pi, np));
   const Measure e = measure_search(equal_np);
+  // (f) the optimal search and the point features at every optimum, in the search's pass
+  const Measure f = measure(repeat, [&] {
+    double checksum = 0.;
+    SN::compute_optimal_point_features<CGAL::Parallel_tag>(
+      indices, boost::make_function_output_iterator([&](const SN::Point_features& p) { checksum += p.verticality; }),
+      np);
+    return checksum;
+  });
   // (d) one fixed triple
   const Measure d = measure(repeat, [&] {
     std::vector<SN::Dimensionality_features> features;
@@ -393,6 +402,8 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
   std::printf("  (d) features, one (a, b, k):        %10.0f points/s (%.2f s)\n", rate(d), d.seconds);
   std::printf("  (e) equal-weights search, 15 sizes: %10.0f points/s (%.2f s), %.0f bytes/point above the input\n",
               rate(e), e.seconds, e.extra_bytes / double(n));
+  std::printf("  (f) (c) with the point features:    %10.0f points/s (%.2f s), %.1f %% above (c)\n", rate(f),
+              f.seconds, 100. * (f.seconds / c.seconds - 1.));
   std::printf("  k-NN share of (c): %.1f %% (%.2f s for one 20-NN query per point)\n",
               100. * knn.seconds / c.seconds, knn.seconds);
   std::printf("  input %.1f MB, (c) peak %.1f MB above it\n", input_bytes / 1e6, c.extra_bytes / 1e6);

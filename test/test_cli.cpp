@@ -302,7 +302,7 @@ TEST_CASE("CLI: --normals, --normal-neighbors, --orientation, --viewpoint, --lin
         {"--normals best", "--normals must be auto, file, pca or jet, got 'best'"},
         {"--normal-neighbors 1", "--normal-neighbors must be at least 2 for pca"},
         {"--normals jet --normal-neighbors 4", "--normal-neighbors must be at least 5 for jet fitting (degree 2)"},
-        {"--orientation sideways", "--orientation must be mst, viewpoint or none, got 'sideways'"},
+        {"--orientation sideways", "--orientation must be mst, viewpoint, up or none, got 'sideways'"},
         {"--orientation viewpoint", "--orientation viewpoint needs --viewpoint X Y Z"},
         {"--viewpoint 1 2", "option --viewpoint needs three values: --viewpoint X Y Z"},
         {"--viewpoint 1 2 nan", "option --viewpoint needs three finite numbers, got '1 2 nan'"},
@@ -689,7 +689,7 @@ TEST_CASE("IO: the dispatcher's errors", "[io][bad-input]")
   CHECK(read_error(path("io_missing.xyz")) == "cannot open the file");
   CHECK(read_error(scratch()) == "is a folder, not a file");
   CHECK(read_error(empty_off()) == "the file is empty");
-  CHECK(read_error(path("io_model.xyzw")) == "unknown format '.xyzw': expected .off, .obj, .ply, .stl, .xyz or .pwn");
+  CHECK(read_error(path("io_model.xyzw")) == "unknown format '.xyzw': expected .off, .obj, .ply, .stl, .xyz, .pwn or .las");
   CHECK(read_error(path("io_noext")).find("unknown format '(no extension)'") == 0);
   CHECK(read_error(path("io_faceless.obj")).find("cannot parse the file as obj, or it has no faces") == 0);
   CHECK(read_error(faceless_stl()) == "no faces in the file");

@@ -112,9 +112,12 @@ static SN::Dimensionality_features plain_features(const Point_list& points, std:
   return SN::dimensionality_features(SN::weighted_covariance(ps, ws, bary));
 }
 
-static SN::Optimal_sigmoid_neighborhood plain_optimal(const Point_list& points, std::size_t i, SN::Barycenter bary)
+static SN::Optimal_sigmoid_neighborhood
+plain_optimal(const Point_list& points, std::size_t i, SN::Barycenter bary,
+              SN::Neighborhood_criterion criterion = SN::Neighborhood_criterion::DIMENSIONALITY)
 {
   SN::Optimal_sigmoid_neighborhood best;
+  best.criterion = criterion;
   const auto grid = SN::default_angle_grid();
   for(double a : grid)
     for(double b : grid)
@@ -124,16 +127,17 @@ static SN::Optimal_sigmoid_neighborhood plain_optimal(const Point_list& points, 
       for(unsigned k = 6; k <= 20; ++k)
       {
         const auto f = plain_features(points, i, a, b, k, bary);
-        if(f.error < best.error() - 1e-12)
+        const double error = SN::criterion_value(f, criterion);
+        if(error < best.error() - 1e-12)
         {
           best.a = a;
           best.b = b;
           best.k = k;
           best.features = f;
         }
-        if(a == pi && b == pi && f.error < best.error_equal - 1e-12)
+        if(a == pi && b == pi && error < best.error_equal - 1e-12)
         {
-          best.error_equal = f.error;
+          best.error_equal = error;
           best.k_equal = k;
         }
       }
@@ -149,15 +153,19 @@ static bool same_record(const SN::Optimal_sigmoid_neighborhood& r, const SN::Opt
          same_bits(r.features.linearity, s.features.linearity) &&
          same_bits(r.features.planarity, s.features.planarity) &&
          same_bits(r.features.scattering, s.features.scattering) && r.features.label == s.features.label &&
+         same_bits(r.features.error, s.features.error) && same_bits(r.features.eigenentropy, s.features.eigenentropy) &&
+         r.criterion == s.criterion &&
          same_bits(r.error_equal, s.error_equal) && r.k_equal == s.k_equal;
 }
 
-static std::vector<SN::Optimal_sigmoid_neighborhood> optimal(const Point_list& points,
-                                                             SN::Barycenter bary = SN::Barycenter::WEIGHTED)
+static std::vector<SN::Optimal_sigmoid_neighborhood>
+optimal(const Point_list& points, SN::Barycenter bary = SN::Barycenter::WEIGHTED,
+        SN::Neighborhood_criterion criterion = SN::Neighborhood_criterion::DIMENSIONALITY)
 {
   std::vector<SN::Optimal_sigmoid_neighborhood> result;
   SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(
-    points, std::back_inserter(result), SNP::barycenter(bary).point_map(Point_map()).normal_map(Normal_map()));
+    points, std::back_inserter(result),
+    SNP::criterion(criterion, SNP::barycenter(bary)).point_map(Point_map()).normal_map(Normal_map()));
   return result;
 }
 
@@ -266,6 +274,63 @@ TEST_CASE("optimal search equals the plain loop over all 420 triples", "[optimal
       CHECK(first_pair < checked / 2); // the noisy normals exercise the whole grid
     else
       CHECK(first_pair == checked); // SPEC 4: the lone point gives a rank-one matrix, E = 0
+  }
+}
+
+TEST_CASE("eigenentropy: analytic values, scale invariance, no additive constant", "[features][criterion]")
+{
+  // a line, a plane with equal spread, an isotropic volume
+  CHECK(SN::eigenentropy(1., 0., 0.) == 0.);
+  CHECK(SN::eigenentropy(2., 2., 0.) == Approx(std::log(2.)).epsilon(1e-15));
+  CHECK(SN::eigenentropy(3., 3., 3.) == Approx(std::log(3.)).epsilon(1e-15));
+  // e = (1/2, 1/4, 1/4): 1/2 ln 2 + 2 (1/4 ln 4) = 1.5 ln 2
+  CHECK(SN::eigenentropy(2., 1., 1.) == Approx(1.5 * std::log(2.)).epsilon(1e-15));
+  // the same shape at any scale (pgeof's + 1e-3 would make the tiny one nearly isotropic)
+  CHECK(SN::eigenentropy(2e-8, 1e-8, 1e-8) == Approx(1.5 * std::log(2.)).epsilon(1e-14));
+  const SN::Dimensionality_features f = SN::dimensionality_features_from_eigenvalues(4., 1., 0.);
+  CHECK(f.eigenentropy == Approx(-(0.8 * std::log(0.8) + 0.2 * std::log(0.2))).epsilon(1e-15));
+  CHECK(SN::criterion_value(f, SN::Neighborhood_criterion::EIGENENTROPY) == f.eigenentropy);
+  CHECK(SN::criterion_value(f, SN::Neighborhood_criterion::DIMENSIONALITY) == f.error);
+  CHECK(std::isinf(SN::dimensionality_features_from_eigenvalues(0., 0., 0.).eigenentropy));
+  CHECK(SN::criterion_from_name("eigenentropy") == SN::Neighborhood_criterion::EIGENENTROPY);
+  CHECK(std::string(SN::criterion_name(SN::Neighborhood_criterion::DIMENSIONALITY)) == "dimensionality");
+  CHECK_THROWS_WITH(SN::criterion_from_name("entropy"), Catch::Contains("expected dimensionality or eigenentropy"));
+}
+
+TEST_CASE("eigenentropy criterion: the search equals the plain loop", "[optimal][criterion]")
+{
+  const auto eigenentropy = SN::Neighborhood_criterion::EIGENENTROPY;
+  for(double scale : {1., 1e-150, 1e120})
+  {
+    Point_list points = folded_sheet(13, 4);
+    for(auto& p : points)
+      p.first = Point_3(p.first.x() * scale, p.first.y() * scale, p.first.z() * scale);
+    for(auto bary : {SN::Barycenter::WEIGHTED, SN::Barycenter::UNWEIGHTED})
+    {
+      if(scale != 1. && bary == SN::Barycenter::UNWEIGHTED)
+        continue;
+      const auto fast = optimal(points, bary, eigenentropy);
+      const auto dimensionality = optimal(points, bary);
+      REQUIRE(fast.size() == points.size());
+      std::size_t finite = 0, other_triple = 0;
+      for(std::size_t i = 0; i < points.size(); i += 3)
+      {
+        const auto plain = plain_optimal(points, i, bary, eigenentropy);
+        CHECK(same_record(fast[i], plain));
+        CHECK(fast[i].criterion == eigenentropy);
+        CHECK(same_bits(fast[i].error(), fast[i].features.eigenentropy));
+        finite += std::isfinite(fast[i].error());
+        other_triple += fast[i].k != dimensionality[i].k || fast[i].a != dimensionality[i].a ||
+                        fast[i].b != dimensionality[i].b;
+      }
+      CHECK(finite > 0);
+      // the two criteria disagree somewhere: the parameter is read (with the plain mean as barycenter,
+      // the point alone at (0, 0) has a rank-one matrix, 0 for both criteria: both stop there)
+      if(bary == SN::Barycenter::WEIGHTED)
+        CHECK(other_triple > 0);
+      else
+        CHECK(other_triple == 0);
+    }
   }
 }
 

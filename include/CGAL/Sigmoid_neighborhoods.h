@@ -16,12 +16,16 @@
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
 #include <CGAL/Sigmoid_neighborhoods/weighted_covariance.h>
 #include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>
+#include <CGAL/Sigmoid_neighborhoods/Neighborhood_criterion.h>
 #include <CGAL/Sigmoid_neighborhoods/Optimal_sigmoid_neighborhood.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_k_nearest_neighbors.h>
 #include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/orient_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/Point_set_3.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_sigmoid_features.h>
+#include <CGAL/Sigmoid_neighborhoods/Point_features.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_point_features.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_height_features.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/evaluate_sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>

@@ -11,7 +11,8 @@
 //   extension  = {off, obj, ply, stl, xyz, pwn}[byte % 6]
 //   barycenter = weighted if (byte / 6) is even, unweighted if odd
 //   (k_min, k_max) = {(3, 6), (1, 2), (2, 4), (5, 8)}[(byte / 12) % 4]
-// The other bytes are written to a file with that extension (the reader takes a file name).
+// The other bytes are written to a file with that extension (the reader takes a file name); when
+// they start with the LAS signature "LASF", with the extension las whatever the byte.
 //
 // Expected outcomes: success, `Input_error` from the reader (bad input, as the command's exit
 // code 2). Findings: a crash, a sanitizer report, a hang, an allocation over libFuzzer's
@@ -33,6 +34,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -55,6 +57,7 @@ constexpr std::size_t MAX_SEARCH_POINTS = 512;       // the search runs on the f
 
 const char* const EXTENSIONS[] = {"off", "obj", "ply", "stl", "xyz", "pwn"};
 constexpr unsigned int NUMBER_OF_FORMATS = 6;
+const char LAS_SIGNATURE[] = {'L', 'A', 'S', 'F'}; // a LAS input goes to a .las file, whatever its selector
 
 struct K_range
 {
@@ -139,7 +142,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if(size < 1 || size - 1 > MAX_INPUT_BYTES)
     return 0;
   const unsigned int selector = data[0];
-  const char* extension = EXTENSIONS[selector % NUMBER_OF_FORMATS];
+  const bool is_las =
+    size - 1 >= sizeof(LAS_SIGNATURE) && std::memcmp(data + 1, LAS_SIGNATURE, sizeof(LAS_SIGNATURE)) == 0;
+  const char* extension = is_las ? "las" : EXTENSIONS[selector % NUMBER_OF_FORMATS];
   const SN::Barycenter barycenter =
     (selector / NUMBER_OF_FORMATS) % 2 == 0 ? SN::Barycenter::WEIGHTED : SN::Barycenter::UNWEIGHTED;
   const K_range k = K_RANGES[(selector / (2 * NUMBER_OF_FORMATS)) % 4];

@@ -48,7 +48,8 @@ struct Model_file
 inline bool is_model_extension(const fs::path& p)
 {
   const std::string ext = SN::lower_case_extension(p.extension().string());
-  return ext == "off" || ext == "obj" || ext == "ply" || ext == "stl" || ext == "xyz" || ext == "pwn";
+  return ext == "off" || ext == "obj" || ext == "ply" || ext == "stl" || ext == "xyz" || ext == "pwn" ||
+         ext == "las";
 }
 
 inline std::vector<Model_file> find_models(const std::vector<std::string>& inputs)

@@ -77,6 +77,7 @@ inline SN::Normal_options normal_options(const Evaluation_settings& s, unsigned 
   o.neighbors = s.normal_neighbors == 0 ? SN::DEFAULT_ESTIMATION_NEIGHBORS : s.normal_neighbors;
   o.orientation = s.orientation == "viewpoint" ? SN::Normal_orientation::VIEWPOINT
                   : s.orientation == "none"    ? SN::Normal_orientation::NONE
+                  : s.orientation == "up"      ? SN::Normal_orientation::UPWARD
                                                : SN::Normal_orientation::SPANNING_FOREST;
   if(s.viewpoint.size() == 3)
     o.viewpoint = SN::Oriented_point_set::Point_3(s.viewpoint[0], s.viewpoint[1], s.viewpoint[2]);

@@ -28,8 +28,8 @@ const std::vector<std::string> NORMAL_FLAGS = {"--line-angles"};
 
 inline const char* NORMAL_USAGE =
   "  normals: --normals auto|file|pca|jet (auto: the file's, else pca), --normal-neighbors 18,\n"
-  "           --orientation mst|viewpoint|none (mst: a spanning forest, every component from its\n"
-  "           highest point), --viewpoint X Y Z (implies viewpoint), --line-angles (weights on the\n"
+  "           --orientation mst|viewpoint|up|none (mst: a spanning forest, every component from its\n"
+  "           highest point; up: n_z >= 0, for airborne scans), --viewpoint X Y Z (implies viewpoint), --line-angles (weights on the\n"
   "           angle between normal lines: for normals whose signs cannot be trusted)\n";
 
 inline std::vector<std::string> with_normal_options(std::vector<std::string> valued)
@@ -78,8 +78,10 @@ inline SN::Normal_options read_normal_options(const Arguments& args)
     o.orientation = SN::Normal_orientation::VIEWPOINT;
   else if(orientation == "none")
     o.orientation = SN::Normal_orientation::NONE;
+  else if(orientation == "up")
+    o.orientation = SN::Normal_orientation::UPWARD;
   else
-    throw Usage_error("--orientation must be mst, viewpoint or none, got '" + orientation + "'");
+    throw Usage_error("--orientation must be mst, viewpoint, up or none, got '" + orientation + "'");
   if(o.orientation == SN::Normal_orientation::VIEWPOINT)
   {
     if(!args.has("--viewpoint"))
@@ -128,6 +130,7 @@ inline std::string orientation_name(SN::Normal_orientation orientation)
 {
   return orientation == SN::Normal_orientation::SPANNING_FOREST ? "mst"
          : orientation == SN::Normal_orientation::VIEWPOINT   ? "viewpoint"
+         : orientation == SN::Normal_orientation::UPWARD      ? "up"
                                                                  : "none";
 }
 
@@ -143,6 +146,8 @@ inline std::string model_description(const SN::Oriented_point_set& model)
            (model.orientation_components == 1 ? "" : "s") + ", ";
     else if(model.orientation == SN::Normal_orientation::VIEWPOINT)
       s += "oriented towards the viewpoint, ";
+    else if(model.orientation == SN::Normal_orientation::UPWARD)
+      s += "oriented upwards, ";
     else
       s += "not oriented, ";
   }

@@ -30,10 +30,12 @@ namespace SN = CGAL::Sigmoid_neighborhoods;
 inline const char* OPTIMAL_USAGE =
   "usage: sigmoid-neighborhoods optimal INPUT -o OUT.csv [--ply OUT.ply] [--color error|label|none]\n"
   "         [--k-min 6] [--k-max 20] [--a-grid ANGLES] [--b-grid ANGLES] [--barycenter weighted|unweighted]\n"
-  "         [--angle-tolerance 1e-6] [--threads N] [normals]\n"
+  "         [--angle-tolerance 1e-6] [--criterion dimensionality|eigenentropy] [--threads N] [normals]\n"
   "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply; normals estimated when absent)\n"
   "  --ply: a binary PLY point cloud: the CSV's columns as properties scalar_<column> (CloudCompare's\n"
-  "      scalar fields), quality = E_dim and red green blue (MeshLab)\n";
+  "      scalar fields), quality = error and red green blue (MeshLab)\n"
+  "  --criterion: what the search minimises, E_dim (dimensionality, the default) or the eigenentropy\n"
+  "      of Weinmann et al.; the columns error and error_equal hold its values\n";
 
 inline const char* GRID_USAGE =
   "  --a-grid, --b-grid: the search grids of a and b (default 0,30deg,60deg,...,180deg), comma-separated\n"
@@ -47,6 +49,7 @@ struct Search_options
   double angle_tolerance = SN::DEFAULT_ANGLE_TOLERANCE;
   unsigned int threads = 0; // 0: OpenMP's default
   bool line_angles = false;
+  SN::Neighborhood_criterion criterion = SN::Neighborhood_criterion::DIMENSIONALITY; // --criterion: optimal only
   std::vector<double> a_grid = SN::default_angle_grid(), b_grid = SN::default_angle_grid();
 };
 
@@ -84,9 +87,9 @@ template <typename NamedParameters>
 auto with_search_options(const Search_options& o, const NamedParameters& np)
 {
   namespace SNP = SN::parameters;
-  return SNP::line_angles(o.line_angles, SNP::number_of_threads(o.threads, SNP::k_min(o.k_min, SNP::k_max(o.k_max,
+  return SNP::criterion(o.criterion, SNP::line_angles(o.line_angles, SNP::number_of_threads(o.threads, SNP::k_min(o.k_min, SNP::k_max(o.k_max,
     SNP::a_grid(o.a_grid, SNP::b_grid(o.b_grid,
-      SNP::barycenter(o.barycenter, SNP::angle_tolerance(o.angle_tolerance, np))))))));
+      SNP::barycenter(o.barycenter, SNP::angle_tolerance(o.angle_tolerance, np)))))))));
 }
 
 // Runs `search(np)` with the model's maps and the search options, and with the model's neighbor
@@ -205,7 +208,8 @@ inline int run_optimal(int argc, char** argv)
 {
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT,
                        with_normal_options({"-o", "--output", "--ply", "--color", "--k-min", "--k-max", "--a-grid",
-                                            "--b-grid", "--barycenter", "--angle-tolerance", "--threads"}),
+                                            "--b-grid", "--barycenter", "--angle-tolerance", "--criterion",
+                                            "--threads"}),
                        with_normal_flags({"-h", "--help"}), NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, OPTIMAL_USAGE))
   {
@@ -216,7 +220,15 @@ inline int run_optimal(int argc, char** argv)
   const std::string& input = input_and_output.first;
   const std::string& csv = input_and_output.second;
   const std::string ply = args.get("--ply");
-  const Search_options options = read_search_options(args);
+  Search_options options = read_search_options(args);
+  try
+  {
+    options.criterion = SN::criterion_from_name(args.get("--criterion", "dimensionality"));
+  }
+  catch(const std::invalid_argument& e)
+  {
+    throw Usage_error(std::string("--criterion: ") + e.what());
+  }
   const Ply_colors colors = read_ply_colors(args);
   const SN::Normal_options normal_options = read_normal_options(args);
 
@@ -235,7 +247,10 @@ inline int run_optimal(int argc, char** argv)
   timer.stop();
   char seconds[32];
   std::snprintf(seconds, sizeof(seconds), "%.2f", timer.time());
-  std::cerr << input << ": " << model_description(model) << (options.line_angles ? ", line angles" : "") << ", "
+  std::cerr << input << ": " << model_description(model) << (options.line_angles ? ", line angles" : "")
+            << (options.criterion != SN::Neighborhood_criterion::DIMENSIONALITY
+                  ? std::string(", criterion ") + SN::criterion_name(options.criterion) : std::string())
+            << ", "
             << failures << " failures, " << seconds << " s\n";
   return EXIT_OK;
 }

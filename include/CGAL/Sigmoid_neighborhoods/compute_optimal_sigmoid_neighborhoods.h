@@ -87,6 +87,11 @@ namespace Sigmoid_neighborhoods {
       \cgalParamType{`Barycenter`}
       \cgalParamDefault{`Barycenter::WEIGHTED`}
     \cgalParamNEnd
+    \cgalParamNBegin{criterion}
+      \cgalParamDescription{what the search minimises: `E_dim` or the eigenentropy}
+      \cgalParamType{`Neighborhood_criterion`}
+      \cgalParamDefault{`Neighborhood_criterion::DIMENSIONALITY`}
+    \cgalParamNEnd
     \cgalParamNBegin{angle_tolerance}
       \cgalParamDescription{angles between normals up to it (radians) count as 0}
       \cgalParamType{`double`}
@@ -192,6 +197,11 @@ compute_optimal_sigmoid_neighborhoods(const PointRange& points, OutputIterator o
       \cgalParamDescription{the centre of the covariance matrix}
       \cgalParamType{`Barycenter`}
       \cgalParamDefault{`Barycenter::WEIGHTED`}
+    \cgalParamNEnd
+    \cgalParamNBegin{criterion}
+      \cgalParamDescription{what the search minimises: `E_dim` or the eigenentropy}
+      \cgalParamType{`Neighborhood_criterion`}
+      \cgalParamDefault{`Neighborhood_criterion::DIMENSIONALITY`}
     \cgalParamNEnd
     \cgalParamNBegin{angle_tolerance}
       \cgalParamDescription{angles between normals up to it (radians) count as 0}

@@ -51,7 +51,7 @@ inline const char* dimensionality_name(Dimensionality d)
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
   the eigenvalue features of one weighted neighborhood (the paper's Section 4).
-  A degenerate neighborhood has `error = +inf`, all other values 0 and the label `DEGENERATE`.
+  A degenerate neighborhood has `error = eigenentropy = +inf`, all other values 0 and the label `DEGENERATE`.
 */
 struct Dimensionality_features
 {
@@ -60,6 +60,8 @@ struct Dimensionality_features
   double planarity = 0.;                          ///< `(lambda2 - lambda3) / lambda1`
   double scattering = 0.;                         ///< `lambda3 / lambda1`
   double error = std::numeric_limits<double>::infinity(); ///< `E_dim`, in `[0, ln 3]`
+  /// the eigenentropy `-sum e_i ln e_i` with `e_i = lambda_i / (lambda1 + lambda2 + lambda3)`, in `[0, ln 3]`
+  double eigenentropy = std::numeric_limits<double>::infinity();
   /// the largest of linearity, planarity and scattering (ties to the first), or `DEGENERATE`
   Dimensionality label = Dimensionality::DEGENERATE;
 
@@ -76,6 +78,20 @@ inline double dimensionality_error(double linearity, double planarity, double sc
 {
   auto term = [](double x) { return x > 0. ? -x * std::log(x) : 0.; };
   return term(linearity) + term(planarity) + term(scattering);
+}
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  the eigenentropy of Weinmann et al. (2015), `-e1 ln e1 - e2 ln e2 - e3 ln e3` with
+  `e_i = lambda_i / (lambda1 + lambda2 + lambda3)` and `0 ln 0 = 0`: in `[0, ln 3]`, and, as `E_dim`,
+  invariant under a scaling of the neighborhood. Nothing is added to the eigenvalues (pgeof adds an
+  absolute `1e-3` to each, which makes its value depend on the unit of the coordinates).
+  \pre the eigenvalues are non-negative with a positive sum (not checked)
+*/
+inline double eigenentropy(double lambda1, double lambda2, double lambda3)
+{
+  const double inverse_sum = 1. / (lambda1 + lambda2 + lambda3);
+  return dimensionality_error(lambda1 * inverse_sum, lambda2 * inverse_sum, lambda3 * inverse_sum);
 }
 
 /*!
@@ -98,6 +114,7 @@ inline Dimensionality_features dimensionality_features_from_eigenvalues(double l
   f.planarity = (lambda2 - lambda3) / lambda1;
   f.scattering = lambda3 / lambda1;
   f.error = dimensionality_error(f.linearity, f.planarity, f.scattering);
+  f.eigenentropy = eigenentropy(lambda1, lambda2, lambda3);
   f.label = Dimensionality::LINEAR;
   if(f.planarity > f.linearity)
     f.label = Dimensionality::PLANAR;

@@ -194,7 +194,8 @@ OutputIterator evaluate_sigmoid_neighborhoods(const PointRange& points, OutputIt
   const auto input = internal::copy_oriented_points(points, NP_helper::get_const_point_map(points, np),
                                                     NP_helper::get_normal_map(points, np),
                                                     internal::line_angles(np));
-  const internal::Search_settings settings = internal::search_settings(np);
+  internal::Search_settings settings = internal::search_settings(np);
+  settings.criterion = Neighborhood_criterion::DIMENSIONALITY; // the paper's statistics are of E_dim
   const double cut_off = choose_parameter(get_parameter(np, internal_np::cut_off_angle), std::acos(0.9));
   const unsigned int fixed_k = choose_parameter(get_parameter(np, internal_np::fixed_k), settings.k_max);
   const internal::Neighbor_query query = internal::neighbor_query(input.points, np);

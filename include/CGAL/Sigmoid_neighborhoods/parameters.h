@@ -55,6 +55,8 @@ CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(barycenter_t, barycenter)
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(angle_tolerance_t, angle_tolerance)
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(cut_off_angle_t, cut_off_angle)
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(fixed_k_t, fixed_k)
+// the optimal search: what it minimises (Neighborhood_criterion)
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(criterion_t, criterion)
 // every algorithm: the threads of one call with `CGAL::Parallel_tag` (0: the OpenMP or TBB default)
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(number_of_threads_t, number_of_threads)
 // the search, the features, the evaluation and the filter: weights on the angle between normal lines

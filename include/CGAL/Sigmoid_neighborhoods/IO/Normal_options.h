@@ -41,6 +41,7 @@ enum class Normal_orientation
 {
   SPANNING_FOREST, ///< `orient_normals_by_spanning_forest()`: every connected component from its highest point
   VIEWPOINT,       ///< `orient_normals_towards_viewpoint()`: every normal towards `Normal_options::viewpoint`
+  UPWARD,          ///< every normal towards `+z` (`n_z >= 0`), as an airborne scanner sees the surfaces
   NONE             ///< as estimated: signs arbitrary (for the named parameter `line_angles`)
 };
 

@@ -35,6 +35,14 @@ struct Oriented_point_set
 
   std::vector<Point_3> points;   ///< distinct points, in input order
   std::vector<Vector_3> normals; ///< unit normals, one per point
+  /// per-point labels, one per point when the file has them (LAS classification, PLY `label`/`class`/
+  /// `classification` property), else empty
+  std::vector<int> labels;
+  std::vector<std::uint16_t> intensities;       ///< LAS intensities, one per point; empty unless LAS
+  std::vector<std::uint8_t> return_numbers;     ///< LAS return numbers, one per point; empty unless LAS
+  std::vector<std::uint8_t> numbers_of_returns; ///< LAS numbers of returns, one per point; empty unless LAS
+  /// LAS GPS times, one per point in the point data formats that have them (all but 0 and 2), else empty
+  std::vector<double> gps_times;
   bool is_mesh = false;                 ///< read from faces; normals are vertex normals unless estimated
   bool normals_estimated = false;       ///< estimated by `estimate_normals()` (`Normal_options`)
   Normal_estimation_method estimation_method = DEFAULT_NORMAL_ESTIMATION_METHOD; ///< when estimated

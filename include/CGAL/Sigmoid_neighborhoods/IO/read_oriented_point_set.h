@@ -15,6 +15,7 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/input_file.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/merge_equal_positions.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/mesh_to_points.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_las.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_polygon_soup.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_xyz.h>
 
@@ -28,13 +29,19 @@ namespace Sigmoid_neighborhoods {
 /*!
   \ingroup PkgSigmoidNeighborhoodsIO
   \brief reads a mesh (OFF, PLY, OBJ, STL) or a point set (XYZ/PWN lines `x y z [nx ny nz]`,
-  PLY with or without `nx ny nz`, OFF without faces) into distinct points with oriented unit normals,
-  as SPEC §1 prescribes.
+  PLY with or without `nx ny nz`, OFF without faces, uncompressed LAS) into distinct points with
+  oriented unit normals, as SPEC §1 prescribes.
 
   Meshes: one point per vertex that has a face, its normal from
   `Polygon_mesh_processing::compute_vertex_normals()` (inconsistent orientations are repaired by
   `orient_polygon_soup()` first); vertices at one position merged, the first kept.
-  Point sets: duplicates merged, the first kept.
+  Point sets: duplicates merged, the first kept, with its label and LAS fields.
+  LAS 1.0 to 1.4, point data formats 0 to 10: the points (`X * scale + offset` in double) without
+  normals, the classification in `Oriented_point_set::labels`, and the intensity, return number,
+  number of returns and GPS time (formats other than 0 and 2) in the other per-point vectors; LAZ
+  (compressed LAS, a `.laz` file or a compressed point data format) is refused with how to decompress it.
+  A PLY point set with a vertex property `label`, `class` or `classification` whose values are
+  integers gets them in `Oriented_point_set::labels`.
   Normals, as `options` says: the file's, or estimated by `estimate_normals()` (PCA by default) on the
   `options.neighbors` nearest points and oriented by `orient_normals_by_spanning_forest()` (every
   connected component from its highest point) or towards a viewpoint, both steps on one
@@ -42,14 +49,14 @@ namespace Sigmoid_neighborhoods {
   or none when `options.neighbors` is 0 (`normals` then comes back empty).
 
   \param filename the file; its extension (any case) selects the format: `.off`, `.obj`, `.ply`,
-  `.stl`, `.xyz` or `.pwn`
+  `.stl`, `.xyz`, `.pwn` or `.las` (`.laz` is refused)
   \param options where the normals come from and how they are estimated and oriented
   \return the points, their normals, how they were obtained, counts of merged and dropped points
 
   \throws Input_error with a one-line message on anything unusable: a missing, unreadable or empty
-  file, an unknown extension, a syntax error, non-finite coordinates, zero or non-finite normals,
-  no points, no normals with `Normal_source::FROM_FILE`, points on which no normal can be estimated
-  (too few, on a line, coincident).
+  file, an unknown extension, a syntax error, a count beyond the file, LAZ, non-finite coordinates,
+  zero or non-finite normals, no points, no normals with `Normal_source::FROM_FILE`, points on which
+  no normal can be estimated (too few, on a line, coincident).
   \throws std::invalid_argument on options no file can satisfy: `options.neighbors` below what the
   method needs (2 for PCA, 5 for jet fitting; 0 is allowed with `Normal_source::AUTO` only).
 */
@@ -63,13 +70,15 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename, c
                                 ", got " + std::to_string(options.neighbors));
   const bool estimate_anyway = options.source == Normal_source::PCA || options.source == Normal_source::JET;
   const internal::Input_file file = internal::open_input_file(
-    filename, {"off", "obj", "ply", "stl", "xyz", "pwn"}, ".off, .obj, .ply, .stl, .xyz or .pwn");
+    filename, {"off", "obj", "ply", "stl", "xyz", "pwn", "las", "laz"}, ".off, .obj, .ply, .stl, .xyz, .pwn or .las");
 
   // Each format to points, and normals when the file has them; a mesh is done there.
   Oriented_point_set out;
   bool has_normals = false;
   if(file.extension == "xyz" || file.extension == "pwn")
     internal::read_xyz(file.name, out.points, out.normals, has_normals);
+  else if(file.extension == "las" || file.extension == "laz")
+    internal::read_las(file, out); // no normals in LAS; LAZ refused
   else
   {
     internal::Polygon_soup soup;
@@ -83,7 +92,7 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename, c
     }
     if(file.extension == "obj" || file.extension == "stl")
       throw Input_error("no faces in the file");
-    internal::read_points_without_faces(file, out.points, out.normals, has_normals); // OFF or PLY
+    internal::read_points_without_faces(file, out.points, out.normals, has_normals, &out.labels); // OFF or PLY
   }
 
   // A point set: checked, merged, normals estimated when asked or when it has none.

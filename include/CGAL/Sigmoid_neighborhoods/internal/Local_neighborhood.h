@@ -7,6 +7,7 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_LOCAL_NEIGHBORHOOD_H
 
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
+#include <CGAL/Sigmoid_neighborhoods/Neighborhood_criterion.h>
 #include <CGAL/Sigmoid_neighborhoods/weighted_covariance.h>
 #include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
@@ -121,7 +122,8 @@ public:
     return dimensionality_features(covariance(w, k, barycenter));
   }
 
-  // The size k in [k_first, k_last] of least E_dim with the weights w, by the tie rule of SPEC §5
+  // The size k in [k_first, k_last] of least criterion value (E_dim by default) with the weights w,
+  // by the tie rule of SPEC §5
   // (sizes ascending, a smaller error by more than TIE_TOLERANCE replaces the best): the one scan
   // over k of every algorithm. k = 0 and E = +inf when every size is degenerate.
   struct Best_size
@@ -130,12 +132,13 @@ public:
     unsigned int k = 0;
   };
 
-  Best_size best_size(const double* w, unsigned int k_first, unsigned int k_last, Barycenter barycenter) const
+  Best_size best_size(const double* w, unsigned int k_first, unsigned int k_last, Barycenter barycenter,
+                      Neighborhood_criterion criterion = Neighborhood_criterion::DIMENSIONALITY) const
   {
     Best_size best;
     for(unsigned int k = k_first; k <= k_last; ++k)
     {
-      const double error = features(w, k, barycenter).error;
+      const double error = criterion_value(features(w, k, barycenter), criterion);
       if(error < best.error - TIE_TOLERANCE)
       {
         best.error = error;

@@ -75,7 +75,9 @@ public:
     std::vector<std::uint32_t> band_indices; // and their neighbors, weight_stride()
     std::vector<double> approx;  // pair-major, one per k; NaN: not trusted, NOT_EVALUATED: see shares
     std::vector<double> margins; // pair-major, one per k: of approx, once it is evaluated
-    std::vector<std::array<double, 4>> shares; // pair-major, one per k: approximate (L, P, S), noise / lambda1
+    // pair-major, one per k: the approximate shares whose entropy is the criterion, (L, P, S) or
+    // lambda_i / sum, and the covariance's noise / lambda1
+    std::vector<std::array<double, 4>> shares;
     std::vector<Dimensionality_features> exact; // pair-major, one per k, where `computed` says so
     std::vector<unsigned char> computed;
     std::vector<double> columns;              // see approximate_shares()
@@ -145,6 +147,7 @@ public:
     }
 
     Optimal_sigmoid_neighborhood result;
+    result.criterion = m_settings.criterion;
     if(best.k != 0)
     {
       result.a = m_sigmoids[best.pair].a();
@@ -157,7 +160,7 @@ public:
     if(m_equal_pair >= 0 && pairs == 1)
     {
       // the scan above was that search
-      result.error_equal = result.features.error;
+      result.error_equal = result.error();
       result.k_equal = result.k;
     }
     else if(m_equal_pair >= 0)
@@ -176,7 +179,8 @@ public:
     else
     {
       const std::vector<double> ones(k_max + 1, 1.);
-      const Local_neighborhood::Best_size equal = local.best_size(ones.data(), k_min, k_max, m_settings.barycenter);
+      const Local_neighborhood::Best_size equal =
+        local.best_size(ones.data(), k_min, k_max, m_settings.barycenter, m_settings.criterion);
       result.error_equal = equal.error;
       result.k_equal = equal.k;
     }
@@ -191,8 +195,8 @@ private:
     double low = std::numeric_limits<double>::infinity(), high = std::numeric_limits<double>::infinity();
     std::size_t pair = 0;
     unsigned int k = 0; // 0: none yet
-    // Shares (L, P, S) whose sum of squares is at most this cannot improve on [low, high]: Shannon's
-    // entropy is at least Renyi's of order 2, E >= -ln(L^2 + P^2 + S^2), so such a triple would be
+    // Shares (L, P, S), or e_i, whose sum of squares is at most this cannot improve on [low, high]:
+    // Shannon's entropy is at least Renyi's of order 2, E >= -ln(L^2 + P^2 + S^2), so such a triple would be
     // dismissed by the first test of visit() anyway; the logarithms of E are not needed for it.
     double hopeless_squares = 0.;
 
@@ -255,19 +259,23 @@ private:
            t[k] == Cosine_sigmoid::WEIGHT_ZERO;
   }
 
-  // The margin of an approximate E, from its shares L and P and the covariance's noise relative to
-  // lambda1. Its eigenvalues are within noise * lambda1 of the exact path's: the closed form's
-  // error, and the covariance's (see approximate_shares()). Each share moves by at most
-  // delta = 3 noise (a difference of two eigenvalues over lambda1, and lambda1's own error), and
-  // -x ln x by at most delta (1 + ln(1 / delta)) (its modulus of continuity on [0, 1] is
+  // The margin of an approximate criterion value, from its shares x (see approximate_shares()) and
+  // the covariance's noise relative to lambda1. Its eigenvalues are within noise * lambda1 of the
+  // exact path's: the closed form's error, and the covariance's. Each share moves by at most delta:
+  // - E_dim: delta = 3 noise (a difference of two eigenvalues over lambda1, and lambda1's own error);
+  // - eigenentropy: e_i = lambda_i / T with T the sum, T >= lambda1 and moved by 3 noise lambda1, so
+  //   e_i moves by at most (noise + 3 noise e_i) lambda1 / T <= 4 noise / (1 - noise): delta = 5 noise;
+  // and -x ln x by at most delta (1 + ln(1 / delta)) (its modulus of continuity on [0, 1] is
   // -delta ln delta), plus 1e-12 for the rounding of E itself. Noise is at most 2.02e-7 (2e-7 from
   // the closed form, at most 1.3e-9 from the covariance where it is trusted), so the margin is at
-  // most 2.8e-5, below LARGEST_APPROXIMATION_MARGIN.
-  static double approximation_margin(double linearity, double planarity, double covariance_noise)
+  // most 4.5e-5, below LARGEST_APPROXIMATION_MARGIN.
+  double approximation_margin(const std::array<double, 4>& x) const
   {
-    // the gaps lambda1 - lambda2 and lambda2 - lambda3, relative to lambda1, are L and P
-    const double noise = closed_form_relative_error((std::min)(linearity, planarity)) + covariance_noise;
-    const double delta = 3. * noise;
+    // the gaps lambda1 - lambda2 and lambda2 - lambda3, relative to lambda1: L and P, or from the e_i
+    const bool dimensionality = m_settings.criterion == Neighborhood_criterion::DIMENSIONALITY;
+    const double relative_gap = dimensionality ? (std::min)(x[0], x[1]) : (std::min)(x[0] - x[1], x[1] - x[2]) / x[0];
+    const double noise = closed_form_relative_error(relative_gap) + x[3];
+    const double delta = (dimensionality ? 3. : 5.) * noise;
     // ln(1 / delta) <= -e ln 2 for delta >= 2^e: no logarithm needed
     return 3. * delta * (1. - std::ilogb(delta) * 0.6931471805599454) + ENTROPY_ROUNDING;
   }
@@ -303,8 +311,8 @@ private:
       const std::array<double, 4>& x = s.shares[slot];
       if(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] <= best.hopeless_squares)
         return;
-      approx = dimensionality_error(x[0], x[1], x[2]);
-      s.margins[slot] = approximation_margin(x[0], x[1], x[3]);
+      approx = dimensionality_error(x[0], x[1], x[2]); // the entropy of the shares, whichever criterion
+      s.margins[slot] = approximation_margin(x);
     }
     // E >= 0: every entropy term is -x ln x with x in [0, 1]
     const double margin = s.margins[slot];
@@ -350,7 +358,10 @@ private:
     return s.exact[slot];
   }
 
-  double exact_error(Scratch& s, std::size_t p, unsigned int k) const { return exact_features(s, p, k).error; }
+  double exact_error(Scratch& s, std::size_t p, unsigned int k) const
+  {
+    return criterion_value(exact_features(s, p, k), m_settings.criterion);
+  }
 
   // Approximate (L, P, S) for every k, from weights within APPROXIMATE_WEIGHT_ERROR of the exact
   // ones (`t` holds their arguments), moments accumulated over the neighbors (one pass) and
@@ -474,9 +485,14 @@ private:
         approx[c] = std::numeric_limits<double>::quiet_NaN(); // not trusted
         continue;
       }
-      const double inverse = 1. / l1;
-      shares[c] = {{(l1 - l2) * inverse, (l2 - l3) * inverse, l3 * inverse,
-                    (COVARIANCE_ROUNDING * column(CANCELLATION)[c] + weight_noise) * inverse}};
+      const double inverse = 1. / l1, noise = (COVARIANCE_ROUNDING * column(CANCELLATION)[c] + weight_noise) * inverse;
+      if(m_settings.criterion == Neighborhood_criterion::DIMENSIONALITY)
+        shares[c] = {{(l1 - l2) * inverse, (l2 - l3) * inverse, l3 * inverse, noise}};
+      else
+      {
+        const double inverse_sum = 1. / (l1 + l2 + l3);
+        shares[c] = {{l1 * inverse_sum, l2 * inverse_sum, l3 * inverse_sum, noise}};
+      }
     }
   }
 

@@ -8,6 +8,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
+#include <CGAL/Sigmoid_neighborhoods/Neighborhood_criterion.h>
 #include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
 
 #include <algorithm>
@@ -25,6 +26,7 @@ struct Search_settings
   std::vector<double> a_grid, b_grid;
   unsigned int k_min = DEFAULT_K_MIN, k_max = DEFAULT_K_MAX;
   Barycenter barycenter = Barycenter::WEIGHTED;
+  Neighborhood_criterion criterion = Neighborhood_criterion::DIMENSIONALITY;
   double angle_tolerance = DEFAULT_ANGLE_TOLERANCE;
   unsigned int threads = 0; // of a call with Parallel_tag; 0: the default
 
@@ -79,6 +81,7 @@ Search_settings search_settings(const NamedParameters& np)
   s.a_grid = checked_grid(choose_parameter(get_parameter(np, internal_np::a_grid), default_angle_grid()), "a");
   s.b_grid = checked_grid(choose_parameter(get_parameter(np, internal_np::b_grid), default_angle_grid()), "b");
   s.barycenter = choose_parameter(get_parameter(np, internal_np::barycenter), Barycenter::WEIGHTED);
+  s.criterion = choose_parameter(get_parameter(np, internal_np::criterion), Neighborhood_criterion::DIMENSIONALITY);
   s.angle_tolerance = choose_parameter(get_parameter(np, internal_np::angle_tolerance), DEFAULT_ANGLE_TOLERANCE);
   s.threads = number_of_threads(np);
   if(!(s.k_min >= 1 && s.k_min <= s.k_max))

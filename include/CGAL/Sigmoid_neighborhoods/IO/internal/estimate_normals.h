@@ -71,6 +71,10 @@ inline void estimate_normals(Oriented_point_set& out, const Normal_options& o)
       out.orientation_components = orient_normals_by_spanning_forest<Parallel_if_available_tag>(indices, k, np);
     else if(o.orientation == Normal_orientation::VIEWPOINT)
       orient_normals_towards_viewpoint(indices, o.viewpoint, maps);
+    else if(o.orientation == Normal_orientation::UPWARD)
+      for(Oriented_point_set::Vector_3& n : out.normals)
+        if(n.z() < 0.)
+          n = -n;
   }
   catch(const std::invalid_argument& e)
   {

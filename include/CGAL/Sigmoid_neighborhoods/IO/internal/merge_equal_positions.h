@@ -17,20 +17,31 @@ namespace CGAL {
 namespace Sigmoid_neighborhoods {
 namespace internal {
 
-// A point set read with or without normals: duplicates merged into the first, with its normal.
+// The values of the distinct positions of `merged`, each its first point's; nothing when empty.
+template <typename T>
+void keep_first_of_merged(std::vector<T>& values, const Merged_positions& merged)
+{
+  if(values.empty())
+    return;
+  for(std::size_t j = 0; j < merged.first.size(); ++j)
+    values[j] = values[merged.first[j]];
+  values.resize(merged.first.size());
+}
+
+// A point set read with or without normals: duplicates merged into the first, with its normal and
+// its per-point values (labels, LAS fields).
 inline void merge_duplicate_points(Oriented_point_set& out, bool has_normals)
 {
   const Merged_positions merged = merge_equal_positions(out.points);
-  for(std::size_t j = 0; j < merged.first.size(); ++j)
-  {
-    out.points[j] = out.points[merged.first[j]];
-    if(has_normals)
-      out.normals[j] = out.normals[merged.first[j]];
-  }
-  out.merged_duplicates = merged.merged;
-  out.points.resize(merged.first.size());
+  keep_first_of_merged(out.points, merged);
   if(has_normals)
-    out.normals.resize(merged.first.size());
+    keep_first_of_merged(out.normals, merged);
+  keep_first_of_merged(out.labels, merged);
+  keep_first_of_merged(out.intensities, merged);
+  keep_first_of_merged(out.return_numbers, merged);
+  keep_first_of_merged(out.numbers_of_returns, merged);
+  keep_first_of_merged(out.gps_times, merged);
+  out.merged_duplicates = merged.merged;
 }
 
 } // namespace internal

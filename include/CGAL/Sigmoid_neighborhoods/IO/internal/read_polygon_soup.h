@@ -19,6 +19,9 @@
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO.h>
 
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -51,10 +54,59 @@ inline void read_polygon_soup(const Input_file& file, Polygon_soup& soup)
                       (reason.empty() ? std::string() : " (" + reason + ")"));
 }
 
+// The PLY vertex properties taken as per-point labels, the first present in this order.
+inline const std::vector<std::string>& ply_label_names()
+{
+  static const std::vector<std::string> names = {"label", "class", "classification"};
+  return names;
+}
+
+// The values of the property `name` of type `T` of `point_set` as labels, when it has one: true then,
+// with `labels` empty when a value is no integer of `int` (a non-integral or non-finite float, an
+// unsigned beyond INT_MAX): such a property is not a label.
+template <typename T, typename Point_set>
+bool ply_labels_of_type(const Point_set& point_set, const std::string& name, std::vector<int>& labels)
+{
+  const auto found = point_set.template property_map<T>(name);
+  if(!found.second)
+    return false;
+  labels.reserve(point_set.size());
+  for(auto it = point_set.begin(); it != point_set.end(); ++it)
+  {
+    const double value = double(get(found.first, *it)); // exact for every PLY type but 64-bit ones
+    if(!(value >= double((std::numeric_limits<int>::min)()) && value <= double((std::numeric_limits<int>::max)())) ||
+       std::trunc(value) != value)
+    {
+      labels.clear();
+      return true;
+    }
+    labels.push_back(int(value));
+  }
+  return true;
+}
+
+// The labels of a point set read from a PLY file: its first property of ply_label_names(), of any
+// numeric type of CGAL's PLY reader; none (empty) otherwise.
+template <typename Point_set>
+void ply_labels(const Point_set& point_set, std::vector<int>& labels)
+{
+  for(const std::string& name : ply_label_names())
+    if(ply_labels_of_type<std::int8_t>(point_set, name, labels) ||
+       ply_labels_of_type<std::uint8_t>(point_set, name, labels) ||
+       ply_labels_of_type<std::int16_t>(point_set, name, labels) ||
+       ply_labels_of_type<std::uint16_t>(point_set, name, labels) ||
+       ply_labels_of_type<std::int32_t>(point_set, name, labels) ||
+       ply_labels_of_type<std::uint32_t>(point_set, name, labels) ||
+       ply_labels_of_type<float>(point_set, name, labels) || ply_labels_of_type<double>(point_set, name, labels))
+      return;
+}
+
 // The points, and normals when it has them, of an OFF or PLY file without faces, read by CGAL's
-// point set reader (after read_polygon_soup(), which has checked the header).
+// point set reader (after read_polygon_soup(), which has checked the header); with `labels`, the
+// labels of a PLY file that has them (ply_labels()).
 inline void read_points_without_faces(const Input_file& file, std::vector<Oriented_point_set::Point_3>& points,
-                                      std::vector<Oriented_point_set::Vector_3>& normals, bool& has_normals)
+                                      std::vector<Oriented_point_set::Vector_3>& normals, bool& has_normals,
+                                      std::vector<int>* labels = nullptr)
 {
   CGAL::Point_set_3<Oriented_point_set::Point_3, Oriented_point_set::Vector_3> point_set;
   {
@@ -72,6 +124,8 @@ inline void read_points_without_faces(const Input_file& file, std::vector<Orient
     if(has_normals)
       normals.push_back(point_set.normal(*it));
   }
+  if(labels != nullptr && file.extension == "ply")
+    ply_labels(point_set, *labels);
 }
 
 } // namespace internal

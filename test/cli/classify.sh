@@ -1,0 +1,67 @@
+#!/bin/sh
+# Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+#
+# sigmoid-neighborhoods classify on CGAL's labeled b9 scan: train, predict, evaluate, and the refusals
+# (no labels, a damaged or forged model, other labels); every refusal exits 2 and writes nothing.
+# usage: classify.sh TOOL b9_training.ply
+set -eu
+tool=$1
+b9=$2
+dir=classify-test
+rm -rf "$dir" && mkdir -p "$dir"
+labels=ground=0,vegetation=1,roof=2
+fail() { echo "FAILED: $*"; exit 1; }
+expect_refusal() { # expected message piece, then the command
+  piece=$1; shift
+  set +e; "$@" > "$dir/out.txt" 2> "$dir/err.txt"; code=$?; set -e
+  [ "$code" -eq 2 ] || fail "exit $code, not 2: $* ($(cat "$dir/err.txt"))"
+  grep -q -- "$piece" "$dir/err.txt" || fail "no '$piece' in: $(cat "$dir/err.txt")"
+}
+
+"$tool" classify train "$b9" -o "$dir/model.bin" --labels $labels --features k20,optimal,height --trees 10 \
+  2> "$dir/train.txt" || fail "train: $(cat "$dir/train.txt")"
+grep -q "model.bin: 34 features, 3 classes, 22300 points" "$dir/train.txt" || fail "train summary: $(cat "$dir/train.txt")"
+head -1 "$dir/model.bin" | grep -q "sigmoid-neighborhoods classifier 1" || fail "model magic"
+
+"$tool" classify predict "$dir/model.bin" "$b9" -o "$dir/predicted.ply" --graphcut 0.2 2> "$dir/predict.txt" \
+  || fail "predict: $(cat "$dir/predict.txt")"
+for property in "element vertex 22300" "property int scalar_label" "property float scalar_confidence_ground" \
+                "property float scalar_confidence_roof" "property int scalar_truth" "property uchar red"; do
+  head -c 2000 "$dir/predicted.ply" | grep -a -q "$property" || fail "no '$property' in the PLY header"
+done
+
+"$tool" classify evaluate "$dir/model.bin" "$b9" -o "$dir/evaluation" 2> "$dir/evaluate.txt" \
+  || fail "evaluate: $(cat "$dir/evaluate.txt")"
+for f in evaluation.md evaluation.csv evaluation.json; do [ -s "$dir/evaluation/$f" ] || fail "no $f"; done
+# the training scan itself: nearly every point right
+grep -q '"mean_iou": 0\.9' "$dir/evaluation/evaluation.json" || fail "mean IoU below 0.9: $(cat "$dir/evaluate.txt")"
+grep -q "^| ground | " "$dir/evaluation/evaluation.md" || fail "no ground row in evaluation.md"
+
+# the experiment: two sets, two orders, with and without graph-cut, its table and its figure
+"$tool" classify experiment --train "$b9" --test "$b9" -o "$dir/experiment" --orders 2 --sets "P=k20;Q=k20,height" \
+  --labels $labels --trees 5 2> "$dir/experiment.txt" || fail "experiment: $(cat "$dir/experiment.txt")"
+[ "$(wc -l < "$dir/experiment/runs.csv")" -eq 9 ] || fail "runs.csv: not 8 runs"
+grep -q "^| Q | k20 + height | yes | 19 | 0\.[0-9]* \[0\.[0-9]*, 0\.[0-9]*\] |" "$dir/experiment/experiment.md" \
+  || fail "no row of set Q in experiment.md"
+[ -s "$dir/experiment/figure_tile.png" ] || fail "no figure"
+head -1 "$dir/experiment/figure_tile.csv" | grep -q "^x,y,z,truth,P,Q$" || fail "figure columns"
+
+# refusals, nothing written
+printf 'ply\nformat ascii 1.0\nelement vertex 30\nproperty float x\nproperty float y\nproperty float z\nend_header\n' > "$dir/unlabeled.ply"
+i=0; while [ $i -lt 30 ]; do echo "$i $((i * i % 7)) $((i % 5))" >> "$dir/unlabeled.ply"; i=$((i + 1)); done
+expect_refusal "has no labels" "$tool" classify train "$dir/unlabeled.ply" -o "$dir/none.bin" --labels $labels --features k20
+[ ! -e "$dir/none.bin" ] || fail "a model was written for a file without labels"
+expect_refusal "unknown group 'colour'" "$tool" classify train "$b9" -o "$dir/none.bin" --features k20,colour
+expect_refusal "code 2 is in two classes" "$tool" classify train "$b9" -o "$dir/none.bin" --labels a=2,b=2
+head -c 300 "$dir/model.bin" > "$dir/truncated.bin"
+expect_refusal "not a usable classifier model" "$tool" classify predict "$dir/truncated.bin" "$b9" -o "$dir/none.ply"
+echo "something else" > "$dir/other.bin"
+expect_refusal "not a classifier model of sigmoid-neighborhoods" "$tool" classify predict "$dir/other.bin" "$b9" -o "$dir/none.ply"
+{ echo "sigmoid-neighborhoods classifier 1"; printf '%*s' 20000 '' | tr ' ' '['; echo; } > "$dir/nested.bin"
+expect_refusal "nest" "$tool" classify predict "$dir/nested.bin" "$b9" -o "$dir/none.ply"
+{ head -1 "$dir/model.bin"; sed -n 2p "$dir/model.bin" | sed 's/"k_max":20/"k_max":"twenty"/'; } > "$dir/forged.bin"
+expect_refusal "not a usable classifier model" "$tool" classify predict "$dir/forged.bin" "$b9" -o "$dir/none.ply"
+expect_refusal "differ from the model's" "$tool" classify evaluate "$dir/model.bin" "$b9" -o "$dir/none" --labels ground=0,rest=1+2
+[ ! -e "$dir/none.ply" ] && [ ! -e "$dir/none" ] || fail "a refused command wrote its output"
+echo "classify-ok"

@@ -1,0 +1,274 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The features a classifier takes (Point_features, Height_features) on analytic neighborhoods,
+// their equality with the search's records, and their entry into CGAL's Classification package.
+
+#include "test_models.h"
+
+#include <CGAL/Sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/Classification/add_point_features.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_height_features.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_point_features.h>
+#include <CGAL/Classification/ETHZ/Random_forest_classifier.h>
+#include <CGAL/Classification/Label_set.h>
+#include <CGAL/Classification/classify.h>
+#include <CGAL/property_map.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace SN = CGAL::Sigmoid_neighborhoods;
+namespace SNP = CGAL::Sigmoid_neighborhoods::parameters;
+
+namespace {
+
+typedef std::pair<Point_3, Vector_3> Point_with_normal;
+typedef std::vector<Point_with_normal> Point_list;
+typedef CGAL::First_of_pair_property_map<Point_with_normal> Point_map;
+typedef CGAL::Second_of_pair_property_map<Point_with_normal> Normal_map;
+
+auto maps() { return CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()); }
+
+bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }
+
+// An n x n grid of spacing 1 in the plane spanned by u and v, normals `normal`.
+Point_list grid(int n, const Vector_3& u, const Vector_3& v, const Vector_3& normal)
+{
+  Point_list result;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+      result.emplace_back(CGAL::ORIGIN + i * u + j * v, normal);
+  return result;
+}
+
+// A roof-like fold over noisy ground with a noisy tree-like blob: every feature varies.
+Point_list scene(unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> noise(0., 0.02);
+  std::uniform_real_distribution<double> unit(-1., 1.);
+  Point_list result;
+  for(int i = 0; i < 20; ++i)
+    for(int j = 0; j < 20; ++j)
+    {
+      const double x = 0.25 * i, y = 0.25 * j;
+      const double roof = x < 2.5 ? 0.5 * x : 2.5 - 0.5 * (x - 2.5);
+      result.emplace_back(Point_3(x, y, roof + noise(rng)),
+                          Vector_3(x < 2.5 ? -0.45 : 0.45, 0., 0.9) + Vector_3(noise(rng), noise(rng), noise(rng)));
+    }
+  for(int i = 0; i < 200; ++i)
+  {
+    const Vector_3 n(unit(rng), unit(rng), unit(rng) + 1.5);
+    result.emplace_back(Point_3(7. + unit(rng), 2. + unit(rng), 3. + unit(rng)), n);
+  }
+  return result;
+}
+
+std::vector<SN::Point_features> features_at(const Point_list& points, const SN::Cosine_sigmoid& sigmoid, unsigned k)
+{
+  std::vector<std::vector<SN::Point_features>> multi;
+  SN::compute_point_features<CGAL::Sequential_tag>(points, sigmoid, {k}, std::back_inserter(multi), maps());
+  std::vector<SN::Point_features> result;
+  for(const auto& m : multi)
+    result.push_back(m.at(0));
+  return result;
+}
+
+} // namespace
+
+TEST_CASE("point features of a horizontal plane, a wall and a line", "[features][classification]")
+{
+  const SN::Cosine_sigmoid equal(CGAL_PI, CGAL_PI);
+  // the centre of a 9 x 9 grid with its 8 nearest neighbors: a 3 x 3 square, lambda1 = lambda2
+  const Point_list plane = grid(9, Vector_3(1, 0, 0), Vector_3(0, 1, 0), Vector_3(0, 0, 1));
+  const SN::Point_features p = features_at(plane, equal, 8)[40];
+  CHECK(p.k == 8);
+  CHECK(p.a == CGAL_PI);
+  CHECK(p.radius == Approx(std::sqrt(2.)).epsilon(1e-15));
+  CHECK(p.dimensionality.linearity == Approx(0.).margin(1e-12));
+  CHECK(p.dimensionality.planarity == Approx(1.).epsilon(1e-12));
+  CHECK(p.dimensionality.eigenentropy == Approx(std::log(2.)).epsilon(1e-12));
+  CHECK(p.anisotropy == Approx(1.).epsilon(1e-12));
+  CHECK(p.omnivariance == Approx(0.).margin(1e-5));
+  CHECK(p.change_of_curvature == Approx(0.).margin(1e-12));
+  CHECK(p.verticality == Approx(0.).margin(1e-12));
+  CHECK(p.normal_z == 1.);
+  // 9 points at squared distances 0, 1 (4 times), 2 (4 times) from the barycenter: mean 12 / 9
+  CHECK(p.sum_of_eigenvalues == Approx(12. / 9.).epsilon(1e-12));
+
+  const Point_list wall = grid(9, Vector_3(1, 0, 0), Vector_3(0, 0, 1), Vector_3(0, 1, 0));
+  const SN::Point_features w = features_at(wall, equal, 8)[40];
+  CHECK(w.verticality == Approx(1.).epsilon(1e-12));
+  CHECK(w.normal_z == 0.);
+
+  Point_list line;
+  for(int i = 0; i < 30; ++i)
+    line.emplace_back(Point_3(i, 0., 0.), Vector_3(0, 0, 1));
+  const SN::Point_features l = features_at(line, equal, 6)[15];
+  CHECK(l.dimensionality.linearity == Approx(1.).epsilon(1e-12));
+  CHECK(l.dimensionality.eigenentropy == Approx(0.).margin(1e-12));
+  CHECK(l.dimensionality.error == Approx(0.).margin(1e-12));
+  CHECK(l.change_of_curvature == Approx(0.).margin(1e-12));
+  CHECK(l.value(SN::Point_feature::LINEARITY) == l.dimensionality.linearity);
+  CHECK(l.value(SN::Point_feature::NEIGHBORHOOD_SIZE) == 6.);
+  CHECK(l.value(SN::Point_feature::RADIUS) == l.radius);
+}
+
+TEST_CASE("point features: invariants, several scales on one query, equal to the fixed-triple features",
+          "[features][classification]")
+{
+  const Point_list points = scene(3);
+  const SN::Cosine_sigmoid sigmoid(CGAL_PI / 6, CGAL_PI / 3);
+  const std::vector<unsigned int> sizes{30, 8, 16};
+  std::vector<std::vector<SN::Point_features>> multi;
+  SN::compute_point_features<CGAL::Sequential_tag>(points, sigmoid, sizes, std::back_inserter(multi), maps());
+  REQUIRE(multi.size() == points.size());
+  for(std::size_t s = 0; s < sizes.size(); ++s)
+  {
+    std::vector<SN::Dimensionality_features> plain;
+    SN::compute_sigmoid_features<CGAL::Sequential_tag>(points, sigmoid, sizes[s], std::back_inserter(plain), maps());
+    const auto single = features_at(points, sigmoid, sizes[s]);
+    std::size_t degenerate = 0;
+    for(std::size_t i = 0; i < points.size(); ++i)
+    {
+      const SN::Point_features& f = multi[i][s];
+      REQUIRE(f.k == sizes[s]);
+      CHECK(same_bits(f.dimensionality.error, plain[i].error));
+      CHECK(same_bits(f.dimensionality.linearity, plain[i].linearity));
+      CHECK(same_bits(f.verticality, single[i].verticality));
+      CHECK(same_bits(f.radius, single[i].radius));
+      if(f.dimensionality.is_degenerate())
+      {
+        ++degenerate;
+        continue;
+      }
+      const auto& d = f.dimensionality;
+      CHECK(d.linearity + d.planarity + d.scattering == Approx(1.).epsilon(1e-12));
+      CHECK(d.eigenentropy >= 0.);
+      CHECK(d.eigenentropy <= std::log(3.) + 1e-12);
+      CHECK(f.omnivariance >= 0.);
+      CHECK(f.omnivariance <= 1. / 3. + 1e-12); // at most for three equal shares
+      CHECK(f.anisotropy == Approx(d.linearity + d.planarity).epsilon(1e-12));
+      CHECK(f.change_of_curvature <= 1. / 3. + 1e-12);
+      CHECK(f.verticality >= 0.);
+      CHECK(f.verticality <= 1.);
+      CHECK(f.sum_of_eigenvalues > 0.);
+      CHECK(f.radius > 0.);
+    }
+    CHECK(degenerate < points.size() / 10); // the blob's scattered normals leave a few points alone
+  }
+  // a larger neighborhood never has a smaller radius
+  for(const auto& m : multi)
+    CHECK((m[1].radius <= m[2].radius && m[2].radius <= m[0].radius));
+  CHECK_THROWS_WITH(SN::compute_point_features<CGAL::Sequential_tag>(points, sigmoid, {}, std::back_inserter(multi),
+                                                                     maps()),
+                    "no neighborhood size given");
+  CHECK_THROWS_WITH(SN::compute_point_features<CGAL::Sequential_tag>(points, sigmoid, std::vector<unsigned int>{unsigned(points.size())},
+                                                                     std::back_inserter(multi), maps()),
+                    Catch::Contains("needs at least k_max + 1"));
+}
+
+TEST_CASE("optimal point features are those of the search's optimum, for both criteria and equal weights",
+          "[features][classification][criterion]")
+{
+  const Point_list points = scene(5);
+  const std::vector<double> pi{CGAL_PI};
+  for(auto criterion : {SN::Neighborhood_criterion::DIMENSIONALITY, SN::Neighborhood_criterion::EIGENENTROPY})
+    for(bool equal_only : {false, true})
+    {
+      std::vector<SN::Optimal_sigmoid_neighborhood> records;
+      std::vector<SN::Point_features> features;
+      const auto grid = equal_only ? pi : SN::default_angle_grid();
+      const auto np = SNP::criterion(criterion, SNP::a_grid(grid, SNP::b_grid(grid))).point_map(Point_map())
+                        .normal_map(Normal_map());
+      SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(points, std::back_inserter(records), np);
+      SN::compute_optimal_point_features<CGAL::Sequential_tag>(points, std::back_inserter(features), np);
+      REQUIRE(features.size() == points.size());
+      for(std::size_t i = 0; i < points.size(); ++i)
+      {
+        const auto& r = records[i];
+        const auto& f = features[i];
+        REQUIRE(f.k == r.k);
+        CHECK(same_bits(f.a, r.a));
+        CHECK(same_bits(f.b, r.b));
+        CHECK(same_bits(f.dimensionality.error, r.features.error));
+        CHECK(same_bits(f.dimensionality.eigenentropy, r.features.eigenentropy));
+        CHECK(same_bits(f.dimensionality.planarity, r.features.planarity));
+        CHECK(same_bits(SN::criterion_value(f.dimensionality, criterion), r.error()));
+      }
+    }
+}
+
+TEST_CASE("height features in cells anchored at the origin", "[features][classification][height]")
+{
+  // two cells of side 2: [0, 2) and [2, 4) in x
+  const std::vector<Point_3> points{Point_3(0.5, 0.5, 10.), Point_3(1.5, 1.9, 13.), Point_3(1.9, 0.1, 11.),
+                                    Point_3(2.1, 0.5, 20.), Point_3(3.9, 1.5, 21.5), Point_3(-0.1, 0.5, 7.)};
+  std::vector<SN::Height_features> h;
+  SN::compute_height_features(points, 2., std::back_inserter(h));
+  REQUIRE(h.size() == points.size());
+  CHECK(h[0].height_above_lowest == 0.);
+  CHECK(h[0].height_below_highest == 3.);
+  CHECK(h[1].vertical_range == 3.);
+  CHECK(h[2].height_above_lowest == 1.);
+  CHECK(h[3].height_below_highest == 1.5);
+  CHECK(h[4].height_above_lowest == 1.5);
+  CHECK(h[5].vertical_range == 0.); // alone in [-2, 0)
+  CHECK_THROWS_WITH(SN::compute_height_features(points, 0., std::back_inserter(h)),
+                    Catch::Contains("cell size must be positive"));
+  const std::vector<Point_3> far{Point_3(1e140, 0., 0.)};
+  CHECK_THROWS_WITH(SN::compute_height_features(far, 1e-10, std::back_inserter(h)), Catch::Contains("64-bit range"));
+}
+
+TEST_CASE("point features enter a CGAL Feature_set and train CGAL's random forest", "[classification]")
+{
+  const Point_list points = scene(7);
+  std::vector<SN::Point_features> features;
+  SN::compute_optimal_point_features<CGAL::Sequential_tag>(points, std::back_inserter(features), maps());
+  std::vector<Point_3> positions;
+  for(const auto& p : points)
+    positions.push_back(p.first);
+  std::vector<SN::Height_features> heights;
+  SN::compute_height_features(positions, 1., std::back_inserter(heights));
+
+  CGAL::Classification::Feature_set feature_set;
+  SN::Classification::add_point_features(feature_set, features, SN::Classification::default_point_features(),
+                                         "_optimal");
+  SN::Classification::add_point_features(feature_set, features, {SN::Point_feature::DIMENSIONALITY_ERROR});
+  SN::Classification::add_height_features(feature_set, heights);
+  REQUIRE(feature_set.size() == 10 + 1 + 3);
+  CHECK(feature_set[0]->name() == "linearity_optimal");
+  CHECK(feature_set[9]->name() == "normal_z_optimal");
+  CHECK(feature_set[10]->name() == "error");
+  CHECK(feature_set[13]->name() == "vertical_range");
+  CHECK(feature_set[3]->value(17) == float(features[17].omnivariance));
+  CHECK(feature_set[11]->value(2) == float(heights[2].height_above_lowest));
+
+  // a non-finite value (a degenerate neighborhood's entropy) is stored below every range
+  SN::Classification::Feature_values infinite({1., std::numeric_limits<double>::infinity(), 0.5}, "x");
+  CHECK(infinite.value(1) == SN::Classification::Feature_values::NON_FINITE_VALUE);
+  CHECK(infinite.value(2) == 0.5f);
+
+  // the roof (first 400 points) against the blob: separable by these features alone
+  CGAL::Classification::Label_set labels;
+  labels.add("roof");
+  labels.add("tree");
+  std::vector<int> truth(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    truth[i] = i < 400 ? 0 : 1;
+  CGAL::Classification::ETHZ::Random_forest_classifier classifier(labels, feature_set);
+  classifier.train(truth, true, 10, 10);
+  std::vector<int> predicted(points.size(), -1);
+  CGAL::Classification::classify<CGAL::Sequential_tag>(points, labels, classifier, predicted);
+  std::size_t correct = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+    correct += predicted[i] == truth[i];
+  CHECK(correct >= points.size() * 98 / 100);
+}

@@ -1,0 +1,242 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The feature groups a classifier can be trained on, computed on one point set: CGAL's own
+// generator and the package's features at fixed, optimal and multiple scales, each group a list of
+// named columns with one value per point.
+
+#ifndef SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_FEATURE_GROUPS_H
+#define SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_FEATURE_GROUPS_H
+
+#include "../command_line.h"
+#include "../optimal_command.h"
+
+#include <CGAL/Sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/Classification/add_point_features.h>
+
+#include <CGAL/Classification/Feature_set.h>
+#include <CGAL/Classification/Point_set_feature_generator.h>
+#include <CGAL/Point_set_3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace sigmoid_tool {
+
+struct Feature_column
+{
+  std::string name;
+  std::vector<double> values; // one per point
+};
+
+// What the feature groups are computed with.
+struct Feature_options
+{
+  std::vector<std::string> groups;
+  unsigned int fixed_k = 20;                           // group k20 (its name follows fixed_k)
+  unsigned int k_min = SN::DEFAULT_K_MIN, k_max = SN::DEFAULT_K_MAX; // the optimal searches
+  std::vector<unsigned int> scales{10, 25, 50, 100};   // groups multiscale and multiscale-sigmoid
+  double sigmoid_a = CGAL_PI / 6., sigmoid_b = CGAL_PI / 3.; // multiscale-sigmoid's weights
+  std::vector<double> cell_sizes{2.5, 5., 10.};        // group height
+  unsigned int cgal_scales = 5;                        // group cgal
+  unsigned int threads = 0;
+};
+
+inline const char* FEATURE_GROUPS_USAGE =
+  "  --features GROUPS: comma-separated, in any combination (default cgal):\n"
+  "      cgal            CGAL's Point_set_feature_generator on 5 scales (eigenvalues, heights, ...)\n"
+  "      k20             the eigen features (linearity ... normal_z) at k = 20, equal weights\n"
+  "      eigenentropy    the same at the eigenentropy-optimal k of Weinmann et al., equal weights, and k\n"
+  "      dimensionality  the same at the E_dim-optimal k, equal weights, and k\n"
+  "      optimal         the same at the optimal sigmoid triple (a*, b*, k*), and k, a, b, the radius\n"
+  "      multiscale      the eigen features at k = 10, 25, 50, 100, equal weights\n"
+  "      multiscale-sigmoid  the same with the sigmoid weights of --sigmoid A,B (default 30deg,60deg)\n"
+  "      height          z above the lowest point, below the highest and the range in 2.5, 5, 10 m cells\n";
+
+inline const std::vector<std::string>& known_feature_groups()
+{
+  static const std::vector<std::string> groups{"cgal",     "k20",        "eigenentropy",       "dimensionality",
+                                               "optimal", "multiscale", "multiscale-sigmoid", "height"};
+  return groups;
+}
+
+inline std::vector<std::string> parse_feature_groups(const std::string& text)
+{
+  std::vector<std::string> groups;
+  std::size_t start = 0;
+  while(start <= text.size())
+  {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string group = text.substr(start, comma - start);
+    start = comma + 1;
+    const auto& known = known_feature_groups();
+    if(std::find(known.begin(), known.end(), group) == known.end())
+      throw Usage_error("--features: unknown group '" + group +
+                        "': expected cgal, k20, eigenentropy, dimensionality, optimal, multiscale, "
+                        "multiscale-sigmoid or height");
+    if(std::find(groups.begin(), groups.end(), group) != groups.end())
+      throw Usage_error("--features: group '" + group + "' given twice");
+    groups.push_back(group);
+  }
+  return groups;
+}
+
+namespace internal_classification {
+
+inline bool has_group(const Feature_options& o, const char* group)
+{
+  return std::find(o.groups.begin(), o.groups.end(), group) != o.groups.end();
+}
+
+inline void append_point_features(const std::vector<SN::Point_features>& features,
+                                  const std::vector<SN::Point_feature>& which, const std::string& suffix,
+                                  std::vector<Feature_column>& columns)
+{
+  for(SN::Point_feature f : which)
+  {
+    Feature_column c{SN::point_feature_name(f) + suffix, {}};
+    c.values.reserve(features.size());
+    for(const SN::Point_features& p : features)
+      c.values.push_back(p.value(f));
+    columns.push_back(std::move(c));
+  }
+}
+
+// CGAL's generator on its own neighbor structures (it builds them), its features read back as columns.
+inline void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scales,
+                                 std::vector<Feature_column>& columns)
+{
+  typedef SN::Oriented_point_set::Kernel Kernel;
+  typedef CGAL::Point_set_3<Kernel::Point_3> Point_set;
+  Point_set points;
+  points.reserve(model.points.size());
+  for(const auto& p : model.points)
+    points.insert(p);
+  CGAL::Classification::Point_set_feature_generator<Kernel, Point_set, Point_set::Point_map> generator(
+    points, points.point_map(), scales);
+  CGAL::Classification::Feature_set features;
+  features.begin_parallel_additions();
+  generator.generate_point_based_features(features);
+  features.end_parallel_additions();
+  for(std::size_t f = 0; f < features.size(); ++f)
+  {
+    Feature_column c{features[f]->name(), {}};
+    c.values.reserve(points.size());
+    for(std::size_t i = 0; i < points.size(); ++i)
+      c.values.push_back(features[f]->value(i));
+    columns.push_back(std::move(c));
+  }
+}
+
+} // namespace internal_classification
+
+// The columns of every group of `o` on `model` (positions and oriented normals), in the order of
+// `o.groups`. The package's groups share one k-nearest-neighbor structure of the largest size needed.
+template <typename Progress>
+std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set& model, const Feature_options& o,
+                                                    const Progress& progress)
+{
+  namespace SNP = SN::parameters;
+  using internal_classification::append_point_features;
+  using internal_classification::has_group;
+  const std::vector<SN::Point_feature> shape = SN::Classification::default_point_features();
+  std::vector<SN::Point_feature> with_size = shape;
+  with_size.push_back(SN::Point_feature::NEIGHBORHOOD_SIZE);
+  std::vector<SN::Point_feature> with_triple = with_size;
+  for(SN::Point_feature f : {SN::Point_feature::SIGMOID_A, SN::Point_feature::SIGMOID_B, SN::Point_feature::RADIUS,
+                             SN::Point_feature::DIMENSIONALITY_ERROR})
+    with_triple.push_back(f);
+
+  unsigned int k_needed = 0;
+  if(has_group(o, "k20"))
+    k_needed = std::max(k_needed, o.fixed_k);
+  if(has_group(o, "eigenentropy") || has_group(o, "dimensionality") || has_group(o, "optimal"))
+    k_needed = std::max(k_needed, o.k_max);
+  if(has_group(o, "multiscale") || has_group(o, "multiscale-sigmoid"))
+    k_needed = std::max(k_needed, *std::max_element(o.scales.begin(), o.scales.end()));
+
+  const auto range = point_indices(model.points.size());
+  std::vector<std::uint32_t> indices;
+  std::vector<std::size_t> offsets;
+  const auto maps = model_maps(model);
+  if(k_needed > 0)
+  {
+    if(model.points.size() < std::size_t(k_needed) + 1)
+      throw SN::Input_error("needs at least " + std::to_string(k_needed + 1) + " distinct points for the features, got " +
+                            std::to_string(model.points.size()));
+    progress("neighbors");
+    SN::compute_k_nearest_neighbors<SN::Parallel_if_available_tag>(range, k_needed, indices, offsets,
+                                                                   SNP::number_of_threads(o.threads, maps));
+  }
+  const auto rows = SNP::number_of_threads(
+    o.threads, SNP::neighbor_indices(std::cref(indices), SNP::neighbor_offsets(std::cref(offsets), maps)));
+  const std::vector<double> pi{CGAL_PI};
+
+  std::vector<Feature_column> columns;
+  for(const std::string& group : o.groups)
+  {
+    progress(group);
+    if(group == "cgal")
+      internal_classification::append_cgal_features(model, o.cgal_scales, columns);
+    else if(group == "k20" || group == "multiscale" || group == "multiscale-sigmoid")
+    {
+      const bool sigmoid = group == "multiscale-sigmoid";
+      const std::vector<unsigned int> sizes = group == "k20" ? std::vector<unsigned int>{o.fixed_k} : o.scales;
+      const SN::Cosine_sigmoid weights = sigmoid ? SN::Cosine_sigmoid(o.sigmoid_a, o.sigmoid_b)
+                                                 : SN::Cosine_sigmoid(CGAL_PI, CGAL_PI);
+      std::vector<std::vector<SN::Point_features>> per_point;
+      per_point.reserve(model.points.size());
+      SN::compute_point_features<SN::Parallel_if_available_tag>(range, weights, sizes, std::back_inserter(per_point),
+                                                                rows);
+      for(std::size_t s = 0; s < sizes.size(); ++s)
+      {
+        std::vector<SN::Point_features> at_size;
+        at_size.reserve(per_point.size());
+        for(const auto& p : per_point)
+          at_size.push_back(p[s]);
+        append_point_features(at_size, shape, (sigmoid ? "_sigmoid_k" : "_k") + std::to_string(sizes[s]), columns);
+      }
+    }
+    else if(group == "eigenentropy" || group == "dimensionality" || group == "optimal")
+    {
+      const bool equal = group != "optimal";
+      const SN::Neighborhood_criterion criterion = group == "eigenentropy" ? SN::Neighborhood_criterion::EIGENENTROPY
+                                                                           : SN::Neighborhood_criterion::DIMENSIONALITY;
+      const auto grid = equal ? pi : SN::default_angle_grid();
+      std::vector<SN::Point_features> features;
+      features.reserve(model.points.size());
+      SN::compute_optimal_point_features<SN::Parallel_if_available_tag>(
+        range, std::back_inserter(features),
+        SNP::criterion(criterion, SNP::k_min(o.k_min, SNP::k_max(o.k_max, SNP::a_grid(grid, SNP::b_grid(grid, rows))))));
+      append_point_features(features, equal ? with_size : with_triple, "_" + group, columns);
+    }
+    else if(group == "height")
+    {
+      for(double cell : o.cell_sizes)
+      {
+        std::vector<SN::Height_features> heights;
+        heights.reserve(model.points.size());
+        SN::compute_height_features(model.points, cell, std::back_inserter(heights));
+        const std::string suffix = "_cell" + number17(cell);
+        Feature_column above{"height_above_lowest" + suffix, {}}, below{"height_below_highest" + suffix, {}},
+          range_column{"vertical_range" + suffix, {}};
+        for(const SN::Height_features& h : heights)
+        {
+          above.values.push_back(h.height_above_lowest);
+          below.values.push_back(h.height_below_highest);
+          range_column.values.push_back(h.vertical_range);
+        }
+        columns.push_back(std::move(above));
+        columns.push_back(std::move(below));
+        columns.push_back(std::move(range_column));
+      }
+    }
+  }
+  return columns;
+}
+
+} // namespace sigmoid_tool
+
+#endif // SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_FEATURE_GROUPS_H
