@@ -108,17 +108,21 @@ SN::Normal_options classify_normal_options(const Arguments& args)
 }
 
 Featured_file read_and_feature(const std::string& path, const Label_mapping& labels, bool need_labels,
-                               const SN::Normal_options& normals, const Feature_options& features)
+                               const SN::Normal_options& normals, const Feature_options& features,
+                               bool compute_features = true)
 {
   Featured_file f;
   f.path = path;
   progress(path + ": reading");
-  f.model = read_input(path, [&] { return read_model(path, 0, normals); });
+  // the normals' neighbor rows kept for the features: one neighbor structure per file
+  f.model = read_input(path, [&] { return read_model(path, largest_neighborhood(features), normals); });
   if(need_labels && f.model.labels.empty())
     throw Usage_error(path + ": the file has no labels (LAS classification, PLY label/class/classification)");
   f.truth.assign(f.model.points.size(), -1);
   for(std::size_t i = 0; i < f.model.labels.size(); ++i)
     f.truth[i] = labels.class_of(f.model.labels[i]);
+  if(!compute_features)
+    return f;
   CGAL::Real_timer timer;
   timer.start();
   f.columns = read_input(path, [&] {
@@ -506,10 +510,12 @@ int run_evaluate(int argc, char** argv)
 
 // The feature sets of the experiment: what a CGAL user has (A), the fixed scale of pgeof and
 // jakteristics (B), the classical optimal neighborhoods (C, D), the package's (E), several scales
-// without and with sigmoid weights (F, F_sigmoid), and CGAL's with the package's added (G_*).
+// without and with sigmoid weights (F, F_sigmoid), and CGAL's with the package's added (G_*), the
+// last two of them the same ablation on top of CGAL's.
 const char* const DEFAULT_EXPERIMENT_SETS =
   "A=cgal;B=k20,height;C=eigenentropy,height;D=dimensionality,height;E=optimal,height;F=multiscale,height;"
-  "F_sigmoid=multiscale-sigmoid,height;G_optimal=cgal,optimal;G_multiscale_sigmoid=cgal,multiscale-sigmoid";
+  "F_sigmoid=multiscale-sigmoid,height;G_optimal=cgal,optimal;G_multiscale=cgal,multiscale;"
+  "G_multiscale_sigmoid=cgal,multiscale-sigmoid";
 
 struct Feature_set_spec
 {
@@ -564,9 +570,10 @@ Experiment_file read_experiment_file(const std::string& path, const Label_mappin
                                      const std::vector<std::string>& groups)
 {
   Experiment_file e;
-  Feature_options none = base;
-  none.groups.clear();
-  e.file = read_and_feature(path, labels, true, normals, none);
+  Feature_options all = base;
+  all.groups = groups;
+  // read with the rows of every group kept, then no group: each is computed and timed below, on those rows
+  e.file = read_and_feature(path, labels, true, normals, all, false);
   for(const std::string& group : groups)
   {
     Feature_options one = base;

@@ -62,7 +62,7 @@ def main():
         wrong = labeled & (values != truth)
         ax.scatter(x[~wrong], y[~wrong], c="#e4e4e4", s=1.0, linewidths=0)
         ax.scatter(x[wrong], y[wrong], c=colors[truth[wrong]], s=2.5, linewidths=0)
-        ax.set_title(f"{title} ({wrong.sum()} points, colored by their true class)", fontsize=9)
+        ax.set_title(f"{title}: {wrong.sum()} points, in their true class's color", fontsize=9)
     for ax in axes.flat:
         ax.set_aspect("equal")
         ax.set_xticks([])

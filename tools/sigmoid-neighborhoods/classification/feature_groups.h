@@ -132,8 +132,24 @@ inline void append_cgal_features(const SN::Oriented_point_set& model, unsigned i
 
 } // namespace internal_classification
 
+// The largest neighborhood the package's groups of `o` need (0: none, CGAL's and the heights only).
+inline unsigned int largest_neighborhood(const Feature_options& o)
+{
+  using internal_classification::has_group;
+  unsigned int k = 0;
+  if(has_group(o, "k20"))
+    k = std::max(k, o.fixed_k);
+  if(has_group(o, "eigenentropy") || has_group(o, "dimensionality") || has_group(o, "optimal"))
+    k = std::max(k, o.k_max);
+  if(has_group(o, "multiscale") || has_group(o, "multiscale-sigmoid"))
+    k = std::max(k, *std::max_element(o.scales.begin(), o.scales.end()));
+  return k;
+}
+
 // The columns of every group of `o` on `model` (positions and oriented normals), in the order of
-// `o.groups`. The package's groups share one k-nearest-neighbor structure of the largest size needed.
+// `o.groups`. The package's groups share one k-nearest-neighbor structure: the model's own rows when
+// its normal estimation kept enough of them (read_model() with largest_neighborhood(o)), else one
+// computed here.
 template <typename Progress>
 std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set& model, const Feature_options& o,
                                                     const Progress& progress)
@@ -149,19 +165,14 @@ std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set
                              SN::Point_feature::DIMENSIONALITY_ERROR})
     with_triple.push_back(f);
 
-  unsigned int k_needed = 0;
-  if(has_group(o, "k20"))
-    k_needed = std::max(k_needed, o.fixed_k);
-  if(has_group(o, "eigenentropy") || has_group(o, "dimensionality") || has_group(o, "optimal"))
-    k_needed = std::max(k_needed, o.k_max);
-  if(has_group(o, "multiscale") || has_group(o, "multiscale-sigmoid"))
-    k_needed = std::max(k_needed, *std::max_element(o.scales.begin(), o.scales.end()));
-
+  const unsigned int k_needed = largest_neighborhood(o);
   const auto range = point_indices(model.points.size());
   std::vector<std::uint32_t> indices;
   std::vector<std::size_t> offsets;
   const auto maps = model_maps(model);
-  if(k_needed > 0)
+  const bool model_rows = k_needed > 0 && !model.neighbor_offsets.empty() &&
+                          model.neighbor_indices.size() >= std::size_t(k_needed) * model.points.size();
+  if(k_needed > 0 && !model_rows)
   {
     if(model.points.size() < std::size_t(k_needed) + 1)
       throw SN::Input_error("needs at least " + std::to_string(k_needed + 1) + " distinct points for the features, got " +
@@ -171,7 +182,8 @@ std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set
                                                                    SNP::number_of_threads(o.threads, maps));
   }
   const auto rows = SNP::number_of_threads(
-    o.threads, SNP::neighbor_indices(std::cref(indices), SNP::neighbor_offsets(std::cref(offsets), maps)));
+    o.threads, SNP::neighbor_indices(std::cref(model_rows ? model.neighbor_indices : indices),
+                                     SNP::neighbor_offsets(std::cref(model_rows ? model.neighbor_offsets : offsets), maps)));
   const std::vector<double> pi{CGAL_PI};
 
   std::vector<Feature_column> columns;
