@@ -108,6 +108,13 @@ TEST_CASE("point features of a horizontal plane, a wall and a line", "[features]
   CHECK(w.verticality == Approx(1.).epsilon(1e-12));
   CHECK(w.normal_z == 0.);
 
+  // a plane tilted by 30 degrees: verticality 1 - cos 30
+  const double c = std::cos(CGAL_PI / 6), s = std::sin(CGAL_PI / 6);
+  const Point_list tilted = grid(9, Vector_3(c, 0, s), Vector_3(0, 1, 0), Vector_3(-s, 0, c));
+  const SN::Point_features t = features_at(tilted, equal, 8)[40];
+  CHECK(t.verticality == Approx(1. - c).epsilon(1e-12));
+  CHECK(t.normal_z == Approx(c).epsilon(1e-15));
+
   Point_list line;
   for(int i = 0; i < 30; ++i)
     line.emplace_back(Point_3(i, 0., 0.), Vector_3(0, 0, 1));

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -126,28 +127,44 @@ struct Point_features
   }
 };
 
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  the features of one weighted covariance (the eigenvalue features and the verticality; `normal_z`,
-  `k`, `a`, `b` and `radius` are left to the caller).
-  The eigenvalues come from `dimensionality_features()` (so that they are bit for bit the search's),
-  the eigenvector of the least one from a second solve with vectors.
-*/
-inline Point_features point_features(const Weighted_covariance& covariance)
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The features of `covariance` beyond its eigenvalues, from `f.dimensionality`'s eigenvalues (of the
+// same matrix). The eigenvector of the least eigenvalue comes from Eigen's closed form
+// (computeDirect()): ample for the verticality, and a small part of the cost of the optimal search.
+inline void complete_point_features(const Weighted_covariance& covariance, Point_features& f)
 {
-  Point_features f;
-  f.dimensionality = dimensionality_features(covariance);
   if(f.dimensionality.is_degenerate())
-    return f;
+    return;
   const auto& ev = f.dimensionality.eigenvalues;
   const double sum = ev[0] + ev[1] + ev[2];
   f.omnivariance = std::cbrt((ev[0] / sum) * (ev[1] / sum) * (ev[2] / sum));
   f.anisotropy = (ev[0] - ev[2]) / ev[0];
   f.sum_of_eigenvalues = sum / covariance.weight_sum;
   f.change_of_curvature = ev[2] / sum;
+  // scaled by the trace first: the closed form then neither overflows nor underflows
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver;
-  solver.compute(covariance.matrix, Eigen::ComputeEigenvectors);
-  f.verticality = 1. - std::abs(solver.eigenvectors()(2, 0)); // column 0: the least eigenvalue
+  solver.computeDirect(covariance.matrix / covariance.trace(), Eigen::ComputeEigenvectors);
+  f.verticality = 1. - (std::min)(std::abs(solver.eigenvectors()(2, 0)), 1.); // column 0: the least eigenvalue
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  the features of one weighted covariance (the eigenvalue features and the verticality; `normal_z`,
+  `k`, `a`, `b` and `radius` are left to the caller).
+  The eigenvalues come from `dimensionality_features()`, so that they are bit for bit those of the
+  search and of `compute_sigmoid_features()`; the eigenvector of the least one, for the verticality,
+  from Eigen's closed-form solver on the matrix scaled by its trace.
+*/
+inline Point_features point_features(const Weighted_covariance& covariance)
+{
+  Point_features f;
+  f.dimensionality = dimensionality_features(covariance);
+  internal::complete_point_features(covariance, f);
   return f;
 }
 

@@ -29,11 +29,16 @@ namespace Sigmoid_neighborhoods {
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-// The features of N_i(k) with the weights w (of `sigmoid`) on `local`, the neighborhood of point i.
+// The features of N_i(k) with the weights w (of `sigmoid`) on `local`, the neighborhood of point i;
+// `known`, when given, holds its dimensionality features already (the search's record at its optimum).
 inline Point_features point_features_of(const Local_neighborhood& local, const double* w, unsigned int k,
-                                        Barycenter barycenter, const Cosine_sigmoid& sigmoid, double normal_z)
+                                        Barycenter barycenter, const Cosine_sigmoid& sigmoid, double normal_z,
+                                        const Dimensionality_features* known = nullptr)
 {
-  Point_features f = point_features(local.covariance(w, k, barycenter));
+  const Weighted_covariance covariance = local.covariance(w, k, barycenter);
+  Point_features f;
+  f.dimensionality = known != nullptr ? *known : dimensionality_features(covariance);
+  complete_point_features(covariance, f);
   f.normal_z = normal_z;
   f.k = k;
   f.a = sigmoid.a();
@@ -126,7 +131,8 @@ compute_point_features(const PointRange& points, const Cosine_sigmoid& sigmoid, 
   \ingroup PkgSigmoidNeighborhoodsRef
   \brief runs the optimal search of `compute_optimal_sigmoid_neighborhoods()` and gives every point
   the `Point_features` of its optimal neighborhood `(a*, b*, k*)`, in the search's own pass (one
-  neighbor query, one more eigen solve per point).
+  neighbor query; per point, the weights and covariance of the optimum once more and a closed-form
+  eigenvector for the verticality).
 
   The named parameters select the search as for `compute_optimal_sigmoid_neighborhoods()`: the grid
   (`a_grid`, `b_grid`, `k_min`, `k_max`) and the `criterion`. Two of its special cases are the
@@ -185,8 +191,9 @@ compute_optimal_point_features(const PointRange& points, OutputIterator output,
       const Cosine_sigmoid sigmoid(record.a, record.b, settings.angle_tolerance);
       s.weights.resize(local.size());
       local.weights(sigmoid, s.weights.data());
+      // the search's own features at its optimum: the same covariance, no second eigenvalue solve
       return internal::point_features_of(local, s.weights.data(), record.k, settings.barycenter, sigmoid,
-                                         input.normals[i].z());
+                                         input.normals[i].z(), &record.features);
     },
     [&output](std::size_t, const Point_features& f) { *output++ = f; }, search.needs_angles());
   return output;
