@@ -31,6 +31,17 @@ for property in "element vertex 22300" "property int scalar_label" "property flo
   head -c 2000 "$dir/predicted.ply" | grep -a -q "$property" || fail "no '$property' in the PLY header"
 done
 
+# CloudCompare (when installed: make test installs it) opens the prediction with its scalar fields
+if command -v CloudCompare > /dev/null; then
+  ( cd "$dir" && QT_QPA_PLATFORM=offscreen timeout 120 CloudCompare -SILENT -NO_TIMESTAMP -O predicted.ply \
+      -C_EXPORT_FMT ASC -ADD_HEADER -SAVE_CLOUDS FILE predicted_cc.asc ) > "$dir/cc.txt" 2>&1 || fail "CloudCompare: $(cat "$dir/cc.txt")"
+  header=$(head -1 "$dir/predicted_cc.asc")
+  for field in label confidence_ground confidence_roof truth; do
+    echo "$header" | grep -q "$field" || fail "CloudCompare did not load the field $field: $header"
+  done
+  [ "$(grep -c . "$dir/predicted_cc.asc")" -eq 22301 ] || fail "CloudCompare did not read 22300 points"
+fi
+
 "$tool" classify evaluate "$dir/model.bin" "$b9" -o "$dir/evaluation" 2> "$dir/evaluate.txt" \
   || fail "evaluate: $(cat "$dir/evaluate.txt")"
 for f in evaluation.md evaluation.csv evaluation.json; do [ -s "$dir/evaluation/$f" ] || fail "no $f"; done

@@ -526,12 +526,8 @@ struct Feature_set_spec
 std::vector<Feature_set_spec> parse_sets(const std::string& text)
 {
   std::vector<Feature_set_spec> sets;
-  std::size_t start = 0;
-  while(start <= text.size())
+  for(const std::string& item : split(text, ';'))
   {
-    const std::size_t semicolon = std::min(text.find(';', start), text.size());
-    const std::string item = text.substr(start, semicolon - start);
-    start = semicolon + 1;
     const std::size_t equals = item.find('=');
     if(equals == std::string::npos || equals == 0)
       throw Usage_error("--sets: expected NAME=GROUP[,GROUP...], got '" + item + "'");
@@ -543,14 +539,9 @@ std::vector<Feature_set_spec> parse_sets(const std::string& text)
 std::vector<std::string> split_list(const std::string& text, const std::string& option)
 {
   std::vector<std::string> items;
-  std::size_t start = 0;
-  while(start <= text.size())
-  {
-    const std::size_t comma = std::min(text.find(',', start), text.size());
-    if(comma > start)
-      items.push_back(text.substr(start, comma - start));
-    start = comma + 1;
-  }
+  for(const std::string& item : split(text, ','))
+    if(!item.empty())
+      items.push_back(item);
   if(items.empty())
     throw Usage_error(option + " needs at least one file");
   return items;

@@ -268,6 +268,20 @@ inline std::vector<double> read_angle_list(const Arguments& args, const std::str
   return angles;
 }
 
+// The pieces of `text` between the separators `separator` (empty pieces included: "a,,b" has three).
+inline std::vector<std::string> split(const std::string& text, char separator)
+{
+  std::vector<std::string> pieces;
+  std::size_t start = 0;
+  while(start <= text.size())
+  {
+    const std::size_t end = std::min(text.find(separator, start), text.size());
+    pieces.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return pieces;
+}
+
 // Runs `read()`; a file it cannot use (Input_error) becomes a Usage_error that names `path`.
 template <typename Read>
 auto read_input(const std::string& path, const Read& read) -> decltype(read())

@@ -65,12 +65,8 @@ inline const std::vector<std::string>& known_feature_groups()
 inline std::vector<std::string> parse_feature_groups(const std::string& text)
 {
   std::vector<std::string> groups;
-  std::size_t start = 0;
-  while(start <= text.size())
+  for(const std::string& group : split(text, ','))
   {
-    const std::size_t comma = std::min(text.find(',', start), text.size());
-    const std::string group = text.substr(start, comma - start);
-    start = comma + 1;
     const auto& known = known_feature_groups();
     if(std::find(known.begin(), known.end(), group) == known.end())
       throw Usage_error("--features: unknown group '" + group +

@@ -50,12 +50,8 @@ const char* const DEFAULT_LABELS = "ground=2,low_vegetation=3+4,high_vegetation=
 inline Label_mapping parse_label_mapping(const std::string& text)
 {
   Label_mapping m;
-  std::size_t start = 0;
-  while(start <= text.size())
+  for(const std::string& item : split(text, ','))
   {
-    const std::size_t comma = std::min(text.find(',', start), text.size());
-    const std::string item = text.substr(start, comma - start);
-    start = comma + 1;
     const std::size_t equals = item.find('=');
     if(equals == std::string::npos || equals == 0 || equals + 1 == item.size())
       throw Usage_error("--labels: expected NAME=CODE[+CODE...], got '" + item + "'");
@@ -69,12 +65,8 @@ inline Label_mapping parse_label_mapping(const std::string& text)
     const int index = int(m.names.size());
     m.names.push_back(name);
     m.codes.emplace_back();
-    std::size_t code_start = equals + 1;
-    while(code_start <= item.size())
+    for(const std::string& code_text : split(item.substr(equals + 1), '+'))
     {
-      const std::size_t plus = std::min(item.find('+', code_start), item.size());
-      const std::string code_text = item.substr(code_start, plus - code_start);
-      code_start = plus + 1;
       char* end = nullptr;
       const long code = std::strtol(code_text.c_str(), &end, 10);
       if(code_text.empty() || *end != '\0' || code < 0 || code > 65535)
