@@ -68,6 +68,7 @@ test: build doc test-deps
 SANITIZE_DIR ?= build-sanitize
 sanitize: deps
 	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSIGMOID_NEIGHBORHOODS_BUILD_BENCHMARKS=OFF \
+	  -DSIGMOID_NEIGHBORHOODS_BUILD_PYTHON=OFF \
 	  -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
 	cd $(SANITIZE_DIR) && ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -j $(JOBS)

@@ -18,9 +18,12 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
 
+#include <boost/iterator/function_output_iterator.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -163,6 +166,37 @@ std::enable_if_t<internal::is_range<PointRange>::value, OutputIterator>
 compute_optimal_point_features(const PointRange& points, OutputIterator output,
                                const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
+  auto discard = boost::make_function_output_iterator([](const Optimal_sigmoid_neighborhood&) {});
+  return compute_optimal_point_features<ConcurrencyTag>(points, discard, output, np).second;
+}
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  \brief the same pass, writing each point's search record as well: what
+  `compute_optimal_sigmoid_neighborhoods()` writes (with `error_equal` and `k_equal`) and the
+  `Point_features` of the optimum, from one neighbor query and one search.
+
+  \tparam RecordOutputIterator an output iterator accepting `Optimal_sigmoid_neighborhood`
+  \tparam FeatureOutputIterator an output iterator accepting `Point_features`
+
+  \param points the input points, with oriented normals
+  \param records receives one search record per point, in the order of `points`, bit for bit those
+         of `compute_optimal_sigmoid_neighborhoods()` with the same named parameters
+  \param features receives one `Point_features` per point, in the order of `points`
+  \param np the named parameters of `compute_optimal_sigmoid_neighborhoods()`
+
+  \return both output iterators past their last record
+*/
+template <typename ConcurrencyTag, typename PointRange, typename RecordOutputIterator, typename FeatureOutputIterator,
+          typename CGAL_NP_TEMPLATE_PARAMETERS>
+#ifdef DOXYGEN_RUNNING
+std::pair<RecordOutputIterator, FeatureOutputIterator>
+#else
+std::enable_if_t<internal::is_range<PointRange>::value, std::pair<RecordOutputIterator, FeatureOutputIterator>>
+#endif
+compute_optimal_point_features(const PointRange& points, RecordOutputIterator records, FeatureOutputIterator features,
+                               const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
   typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
   static_assert(NP_helper::has_normal_map(), "compute_optimal_point_features() needs a normal map");
   const auto input = internal::copy_oriented_points(points, NP_helper::get_const_point_map(points, np),
@@ -178,25 +212,32 @@ compute_optimal_point_features(const PointRange& points, OutputIterator output,
     internal::Optimal_search::Scratch search;
     std::vector<double> weights;
   };
-  internal::for_each_neighborhood<ConcurrencyTag, Point_features>(
+  typedef std::pair<Optimal_sigmoid_neighborhood, Point_features> Result;
+  internal::for_each_neighborhood<ConcurrencyTag, Result>(
     input, query, settings.k_max, settings.threads, [&search] { return Scratch{search.make_scratch(), {}}; },
     [&](std::size_t i, const internal::Local_neighborhood& local, Scratch& s) {
-      const Optimal_sigmoid_neighborhood record = search(local, s.search);
+      Result result;
+      result.first = search(local, s.search);
+      const Optimal_sigmoid_neighborhood& record = result.first;
       if(record.is_failure())
       {
-        Point_features failure;
-        failure.normal_z = input.normals[i].z();
-        return failure;
+        result.second.normal_z = input.normals[i].z();
+        return result;
       }
       const Cosine_sigmoid sigmoid(record.a, record.b, settings.angle_tolerance);
       s.weights.resize(local.size());
       local.weights(sigmoid, s.weights.data());
       // the search's own features at its optimum: the same covariance, no second eigenvalue solve
-      return internal::point_features_of(local, s.weights.data(), record.k, settings.barycenter, sigmoid,
-                                         input.normals[i].z(), &record.features);
+      result.second = internal::point_features_of(local, s.weights.data(), record.k, settings.barycenter, sigmoid,
+                                                   input.normals[i].z(), &record.features);
+      return result;
     },
-    [&output](std::size_t, const Point_features& f) { *output++ = f; }, search.needs_angles());
-  return output;
+    [&](std::size_t, const Result& r) {
+      *records++ = r.first;
+      *features++ = r.second;
+    },
+    search.needs_angles());
+  return {records, features};
 }
 
 } // namespace Sigmoid_neighborhoods
