@@ -7,6 +7,7 @@
 #   make doc        # the manual only: $(BUILD_DIR)/doc/html/index.html
 #   make denoising  # the denoiser against CGAL's smoothing: $(RESULTS_DIR)/denoising/
 #   make classification  # feature sets for semantic classification of lidar: $(RESULTS_DIR)/classification/
+#   make python     # the Python module, installed into $(PYTHON_VENV) (a venv that sees Debian's numpy)
 
 BUILD_DIR ?= build
 RESULTS_DIR ?= results
@@ -14,14 +15,16 @@ JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
 DEBIAN_PACKAGES = g++ make cmake ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev \
                   libgmp-dev libmpfr-dev libtbb-dev libboost-serialization-dev libboost-iostreams-dev zlib1g-dev \
-                  nlohmann-json3-dev catch2 python3-matplotlib python3-numpy doxygen parallel
-# Only for `make test`: the viewer test opens the tool's PLY files in CloudCompare (headless).
-TEST_PACKAGES = cloudcompare
+                  nlohmann-json3-dev catch2 python3-matplotlib python3-numpy doxygen parallel \
+                  python3-dev python3-venv python3-setuptools python3-pytest pybind11-dev python3-pybind11
+# Only for `make test`: the viewer test opens the tool's PLY files in CloudCompare (headless); the
+# Python examples' tests use Open3D and scikit-learn.
+TEST_PACKAGES = cloudcompare python3-open3d python3-sklearn
 CGAL_DATA_ARCHIVE = /usr/share/doc/libcgal-dev/data.tar.gz
 CORPUS_DIR = $(BUILD_DIR)/cgal-data
 TOOL = $(BUILD_DIR)/tools/sigmoid-neighborhoods/sigmoid-neighborhoods
 
-.PHONY: all deps test-deps configure build doc test sanitize fuzz evaluate corpus denoising classification clean
+.PHONY: all deps test-deps configure build doc test sanitize fuzz evaluate corpus denoising classification python clean
 
 all: build
 
@@ -92,6 +95,14 @@ fuzz: deps
 	  $(FUZZ_DIR)/test/fuzz/fuzz_read_and_optimal $(FUZZ_DIR)/corpus -max_total_time=$(FUZZ_SECONDS) \
 	  -max_len=1048576 -timeout=10 -rss_limit_mb=512 -malloc_limit_mb=256 -artifact_prefix=$(CURDIR)/$(FUZZ_DIR)/artifacts/ \
 	  -print_final_stats=1
+
+# The Python module (python/), installed without network into a virtual environment on Debian's
+# /usr/bin/python3 (which sees Debian's numpy): `$(PYTHON_VENV)/bin/python -c "import sigmoid_neighborhoods"`.
+PYTHON_VENV ?= .venv
+python: deps
+	/usr/bin/python3 -m venv --system-site-packages $(PYTHON_VENV)
+	NPY_NUM_BUILD_JOBS=$(JOBS) $(PYTHON_VENV)/bin/pip install --no-build-isolation --no-index --no-deps ./python
+	$(PYTHON_VENV)/bin/python -c "import sigmoid_neighborhoods as sn; print('sigmoid_neighborhoods', sn.__version__, 'in $(PYTHON_VENV)')"
 
 # The embedded default corpus: the public data of Debian's libcgal-demo.
 corpus: deps

@@ -37,6 +37,11 @@ public:
   Rows_3() = default;
   Rows_3(const py::handle& object, const char* name)
   {
+    if(object.is_none())
+      throw py::type_error(std::string(name) + " is None" +
+                           (std::string(name) == "normals"
+                              ? ": read() gives None for a file without normals and k = 0; estimate_normals() gives them"
+                              : ""));
     py::array array = py::array::ensure(object);
     if(!array)
       throw py::type_error(std::string(name) + " must be an array of shape (n, 3)");

@@ -1,0 +1,49 @@
+# Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The Python module sigmoid_neighborhoods, built against the package's headers and Debian's CGAL,
+Eigen, Boost, GMP, MPFR and OpenMP. Without network, from the repository root:
+
+    /usr/bin/python3 -m venv --system-site-packages .venv
+    .venv/bin/pip install --no-build-isolation --no-index ./python
+
+(`make python` does this.) Debian's /usr/bin/python3 sees Debian's numpy; another python3 may not.
+"""
+
+import pathlib
+import re
+
+from pybind11.setup_helpers import ParallelCompile, Pybind11Extension, build_ext
+from setuptools import setup
+
+HERE = pathlib.Path(__file__).resolve().parent
+REPOSITORY = HERE.parent
+VERSION = re.search(r"project\(Sigmoid_neighborhoods VERSION ([0-9.]+)", (REPOSITORY / "CMakeLists.txt").read_text())[1]
+
+# NPY_NUM_BUILD_JOBS=N compiles the translation units in parallel
+ParallelCompile("NPY_NUM_BUILD_JOBS").install()
+
+core = Pybind11Extension(
+    "sigmoid_neighborhoods._core",
+    sorted(str(p.relative_to(HERE)) for p in (HERE / "src").glob("*.cpp")),
+    include_dirs=[str(REPOSITORY / "include"), "/usr/include/eigen3"],
+    define_macros=[("NDEBUG", None), ("CGAL_EIGEN3_ENABLED", None), ("SIGMOID_NEIGHBORHOODS_VERSION", f'"{VERSION}"')],
+    # the flags of the CMake build (Release): the same code as the C++ library's tests check
+    extra_compile_args=["-O3", "-g0", "-fopenmp"],
+    extra_link_args=["-fopenmp"],
+    libraries=["gmp", "mpfr"],
+    cxx_std=17,
+)
+
+setup(
+    name="sigmoid_neighborhoods",
+    version=VERSION,
+    description="Shape-aware neighborhoods of point sets: sigmoid-weighted covariance features and optimal (a, b, k)",
+    license="GPL-3.0-or-later",
+    packages=["sigmoid_neighborhoods"],
+    package_data={"sigmoid_neighborhoods": ["__init__.pyi", "py.typed"]},
+    ext_modules=[core],
+    cmdclass={"build_ext": build_ext},
+    python_requires=">=3.9",
+    install_requires=["numpy"],
+    zip_safe=False,
+)
