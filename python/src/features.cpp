@@ -263,7 +263,8 @@ dict of arrays of shape (n,) or (n, len(k)): "eigenvalues" (..., 3) lambda1 >= l
 "linearity", "planarity", "scattering", "error" (E_dim), "eigenentropy", "label" (int8: index into
 LABEL_NAMES), "omnivariance", "anisotropy", "sum_of_eigenvalues", "change_of_curvature",
 "verticality", "normal_z", "radius", "k" (uint32), "a", "b". A degenerate neighborhood has every
-eigenvalue feature 0, both entropies +inf and the label 3 (degenerate).
+eigenvalue feature 0, both entropies +inf and the label 3 (degenerate); "normal_z", "radius", "k", "a"
+and "b", which do not come from the eigenvalues, keep their values.
 
 Raises
 ------
