@@ -368,31 +368,27 @@ inline int run_evaluate(int argc, char** argv)
   write_file_atomically((fs::path(dir) / "failures.json").string(),
                         [&](std::ofstream& out) { write_failures_json(out, failures); });
   write_summary({dir}, repository, (fs::path(dir) / "summary.json").string());
-  write_file_atomically((fs::path(dir) / "run.json").string(), [&](std::ofstream& out) {
-    Json_writer w(out);
-    w.begin_object()
-      .value("command", "evaluate")
-      .value("date", iso_date())
-      .value("host", host_name())
-      .value("seconds", timer.time())
-      .value("threads", unsigned(options.threads))
-      .value("shard", std::to_string(shard_index) + "/" + std::to_string(shard_count))
-      .value("models_in_shard", models.size())
-      .value("models_evaluated", evaluated)
-      .value("models_resumed", resumed)
-      .value("models_failed", failures.size())
-      .value("points_evaluated", points)
-      .value("models_with_estimated_normals", estimated_models)
-      .value("points_with_estimated_normals", estimated_points)
-      .value("spanning_forest_trees", normal_trees);
-    write_settings(w, settings);
-    w.begin_array("inputs");
-    for(const auto& input : args.positional())
-      w.value(nullptr, fs::absolute(input).lexically_normal().string());
-    w.end_array();
-    w.array("skipped_without_normals", skipped_without_normals);
-    w.end_object().finish();
-  });
+  Json run;
+  run["command"] = "evaluate";
+  run["date"] = iso_date();
+  run["host"] = host_name();
+  run["seconds"] = timer.time();
+  run["threads"] = unsigned(options.threads);
+  run["shard"] = std::to_string(shard_index) + "/" + std::to_string(shard_count);
+  run["models_in_shard"] = models.size();
+  run["models_evaluated"] = evaluated;
+  run["models_resumed"] = resumed;
+  run["models_failed"] = failures.size();
+  run["points_evaluated"] = points;
+  run["models_with_estimated_normals"] = estimated_models;
+  run["points_with_estimated_normals"] = estimated_points;
+  run["spanning_forest_trees"] = normal_trees;
+  run["settings"] = settings_json(settings);
+  Json& inputs = run["inputs"] = Json::array();
+  for(const auto& input : args.positional())
+    inputs.push_back(fs::absolute(input).lexically_normal().string());
+  run["skipped_without_normals"] = skipped_without_normals;
+  write_file_atomically((fs::path(dir) / "run.json").string(), [&](std::ofstream& out) { write_json(out, run); });
   std::cerr << outdir << ": " << evaluated << " models evaluated, " << resumed << " resumed, " << failures.size()
             << " failed, " << skipped_without_normals.size() << " skipped, " << points << " points, "
             << Progress::duration(timer.time()) << '\n';
@@ -409,29 +405,21 @@ inline int run_merge(int argc, char** argv)
   if(outdir.empty() || args.positional().empty())
     throw Usage_error("merge needs OUTDIR... -o OUTDIR");
   std::string repository = args.get("--repository");
-  std::vector<Model_failure> failures;
   for(const auto& folder : args.positional())
   {
     const fs::path summary = fs::path(folder) / "summary.json";
     if(!fs::exists(summary))
       throw Usage_error(folder + " has no summary.json: not an evaluation folder");
-    const std::string name = read_json(summary.string()).get<std::string>("repository");
+    // each folder checked whole (its summary against its models) before anything is written
+    const std::string name = read_summary(folder)["repository"].get<std::string>();
     if(repository.empty())
       repository = name;
     else if(!args.has("--repository") && name != repository)
       throw Usage_error("folders of different repositories (" + repository + ", " + name +
                         "): pass --repository to merge them anyway");
-    const auto f = read_failures_json((fs::path(folder) / "failures.json").string());
-    failures.insert(failures.end(), f.begin(), f.end());
   }
-  std::vector<std::string> names;
-  for(const auto& folder : args.positional())
-    for(const auto& m : model_files(folder))
-      names.push_back(m.first);
-  std::sort(names.begin(), names.end());
-  const auto twice = std::adjacent_find(names.begin(), names.end());
-  if(twice != names.end())
-    throw Usage_error("model " + *twice + " is in two of the folders to merge");
+  // a model in two of the folders, and the models' settings, refused before anything is written
+  const std::vector<Model_failure> failures = read_evaluation_folders(args.positional()).failures;
   create_output_folder(outdir, "models");
   std::error_code ec;
   // Copy the model files, so that the merged folder is an evaluation folder like any other.

@@ -44,8 +44,15 @@ inline std::string percent(std::size_t part, std::size_t whole)
 struct Repository_summary
 {
   std::string folder, name;
-  Json tree;
-  bool evaluated() const { return bool(tree.get_child_optional("statistics")); }
+  Json_value tree; // summary.json, checked by read_summary()
+  bool evaluated() const { return tree.contains("statistics"); }
+  // the value at `path` ("statistics/optimal/mean"), NaN for null
+  double number(const std::string& path) const
+  {
+    const Json_value& v = tree.at(Json_value::json_pointer("/" + path));
+    return v.is_null() ? std::numeric_limits<double>::quiet_NaN() : v.get<double>();
+  }
+  std::size_t count(const std::string& path) const { return tree.at(Json_value::json_pointer("/" + path)).get<std::size_t>(); }
 };
 
 inline void write_report_markdown(std::ostream& out, const std::vector<Repository_summary>& repos,
@@ -74,17 +81,15 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
   out << "| repository | models | failed models | points | merged duplicates | dropped vertices |\n"
          "|---|---:|---:|---:|---:|---:|\n";
   for(const auto& r : repos)
-    out << "| " << r.name << " | " << r.tree.get<std::string>("models") << " | "
-        << r.tree.get<std::string>("failed_models") << " | " << r.tree.get<std::string>("points") << " | "
-        << r.tree.get<std::string>("merged_duplicates") << " | " << r.tree.get<std::string>("dropped_vertices")
-        << " |\n";
+    out << "| " << r.name << " | " << r.count("models") << " | " << r.count("failed_models") << " | "
+        << r.count("points") << " | " << r.count("merged_duplicates") << " | " << r.count("dropped_vertices") << " |\n";
 
   out << "\n## Table 2: `E_dim` over all points\n\n";
   out << "| ";
   std::vector<std::string> columns;
   for(const auto& r : repos)
   {
-    const std::string fixed = r.evaluated() ? r.tree.get<std::string>("settings.fixed_k") : "?";
+    const std::string fixed = r.evaluated() ? std::to_string(r.count("settings/fixed_k")) : "?";
     for(const char* w : {"equal", "cut-off", "optimal"})
       columns.push_back(r.name + ": " + w);
     columns.push_back(r.name + ": equal, k = " + fixed);
@@ -100,10 +105,7 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
     std::vector<std::string> cells;
     for(const auto& r : repos)
       for(const char* w : {"equal", "cut_off", "optimal", "fixed_k"})
-        cells.push_back(r.evaluated() ? format("%.4f", json_double(r.tree, std::string("statistics.") + w + "." +
-                                                                             st.second,
-                                                                    std::numeric_limits<double>::quiet_NaN()))
-                                      : "–");
+        cells.push_back(r.evaluated() ? format("%.4f", r.number(std::string("statistics/") + w + "/" + st.second)) : "–");
     row(st.first, cells);
   }
   {
@@ -116,8 +118,8 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
           cells.push_back("–");
           continue;
         }
-        const std::size_t f = json_size(r.tree, std::string("statistics.") + w + ".failures");
-        cells.push_back(std::to_string(f) + " (" + percent(f, json_size(r.tree, "statistics.points")) + ")");
+        const std::size_t f = r.count(std::string("statistics/") + w + "/failures");
+        cells.push_back(std::to_string(f) + " (" + percent(f, r.count("statistics/points")) + ")");
       }
     row("failures", cells);
   }
@@ -138,8 +140,7 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
   {
     std::vector<std::string> cells;
     for(const auto& r : repos)
-      cells.push_back(r.evaluated() ? percent(json_size(r.tree, "statistics.table3." + t.second),
-                                              json_size(r.tree, "statistics.optimal.count"))
+      cells.push_back(r.evaluated() ? percent(r.count("statistics/table3/" + t.second), r.count("statistics/optimal/count"))
                                     : "–");
     row(t.first, cells);
   }
@@ -147,8 +148,8 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
     std::vector<std::string> mean, sd;
     for(const auto& r : repos)
     {
-      mean.push_back(r.evaluated() ? format("%.2f", json_double(r.tree, "statistics.k_mean", NAN)) : "–");
-      sd.push_back(r.evaluated() ? format("%.2f", json_double(r.tree, "statistics.k_standard_deviation", NAN)) : "–");
+      mean.push_back(r.evaluated() ? format("%.2f", r.number("statistics/k_mean")) : "–");
+      sd.push_back(r.evaluated() ? format("%.2f", r.number("statistics/k_standard_deviation")) : "–");
     }
     row("mean k*", mean);
     row("sd k*", sd);
@@ -193,8 +194,8 @@ inline int run_report(int argc, char** argv)
       throw Usage_error(folder + " has no summary.json: run evaluate first");
     Repository_summary r;
     r.folder = folder;
-    r.tree = read_json(summary.string());
-    r.name = r.tree.get<std::string>("repository");
+    r.tree = read_summary(folder); // with its model files: the plot script reads only checked files
+    r.name = r.tree["repository"].get<std::string>();
     repos.push_back(r);
   }
   create_output_folder(outdir);
@@ -205,11 +206,10 @@ inline int run_report(int argc, char** argv)
   {
     const std::string model_path = args.get("--figure-model");
     Search_options options = read_search_options(args);
-    const Json& settings_tree = repos.front().tree;
     Evaluation_settings settings;
     settings.a_grid = settings.b_grid = SN::default_angle_grid();
-    if(repos.front().evaluated())
-      settings = read_settings(settings_tree); // its grids too: the figure is of the evaluation's search
+    if(repos.front().evaluated()) // its grids too: the figure is of the evaluation's search
+      settings = read_settings(Json_object(repos.front().tree, (fs::path(repos.front().folder) / "summary.json").string()));
     settings.cut_off_angle = std::acos(EVALUATION_CUT_OFF_COSINE);
     options.k_min = settings.k_min;
     options.k_max = settings.k_max;
