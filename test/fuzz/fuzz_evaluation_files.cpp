@@ -93,7 +93,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         std::abort(); // the reader promises consistent counts and sizes
     }
     else if(which == 1)
-      sigmoid_tool::read_failures_json(file.string());
+    {
+      std::vector<sigmoid_tool::Model_failure> failures;
+      std::vector<sigmoid_tool::Small_model> small;
+      sigmoid_tool::read_failures_json(file.string(), failures, small);
+      for(const auto& m : small)
+        if(m.points >= m.needed)
+          std::abort(); // the reader promises models smaller than the grid
+    }
     else
       sigmoid_tool::read_summary(folder.root.string());
   }

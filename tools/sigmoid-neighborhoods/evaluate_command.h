@@ -305,6 +305,7 @@ inline int run_evaluate(int argc, char** argv)
   CGAL::Real_timer timer;
   timer.start();
   std::vector<Model_failure> failures;
+  std::vector<Small_model> too_small;
   std::vector<std::string> skipped_without_normals;
   std::size_t evaluated = 0, resumed = 0, points = 0, estimated_models = 0, estimated_points = 0, normal_trees = 0;
   for(const Model_file& file : models)
@@ -350,6 +351,13 @@ inline int run_evaluate(int argc, char** argv)
     {
       throw; // the output folder is unusable: stop
     }
+    catch(const Too_small_for_the_grid& e)
+    {
+      too_small.push_back({file.name, e.needed, e.points});
+      progress.done(file.name, 0, file.bytes,
+                    "too small for the grid: " + std::to_string(e.points) + " distinct points, needs " +
+                      std::to_string(e.needed));
+    }
     catch(const std::bad_alloc&)
     {
       // what std::bad_alloc says is no message; the memory is back once the model is dropped
@@ -366,7 +374,7 @@ inline int run_evaluate(int argc, char** argv)
 
   const std::string dir = outdir;
   write_file_atomically((fs::path(dir) / "failures.json").string(),
-                        [&](std::ofstream& out) { write_failures_json(out, failures); });
+                        [&](std::ofstream& out) { write_failures_json(out, failures, too_small); });
   write_summary({dir}, repository, (fs::path(dir) / "summary.json").string());
   Json run;
   run["command"] = "evaluate";
@@ -379,6 +387,7 @@ inline int run_evaluate(int argc, char** argv)
   run["models_evaluated"] = evaluated;
   run["models_resumed"] = resumed;
   run["models_failed"] = failures.size();
+  run["models_too_small"] = too_small.size();
   run["points_evaluated"] = points;
   run["models_with_estimated_normals"] = estimated_models;
   run["points_with_estimated_normals"] = estimated_points;
@@ -389,8 +398,8 @@ inline int run_evaluate(int argc, char** argv)
     inputs.push_back(fs::absolute(input).lexically_normal().string());
   run["skipped_without_normals"] = skipped_without_normals;
   write_file_atomically((fs::path(dir) / "run.json").string(), [&](std::ofstream& out) { write_json(out, run); });
-  std::cerr << outdir << ": " << evaluated << " models evaluated, " << resumed << " resumed, " << failures.size()
-            << " failed, " << skipped_without_normals.size() << " skipped, " << points << " points, "
+  std::cerr << outdir << ": " << evaluated << " models evaluated, " << resumed << " resumed, " << too_small.size()
+            << " too small for the grid, " << failures.size() << " failed, " << skipped_without_normals.size() << " skipped, " << points << " points, "
             << Progress::duration(timer.time()) << '\n';
   return EXIT_OK;
 }
@@ -419,7 +428,7 @@ inline int run_merge(int argc, char** argv)
                         "): pass --repository to merge them anyway");
   }
   // a model in two of the folders, and the models' settings, refused before anything is written
-  const std::vector<Model_failure> failures = read_evaluation_folders(args.positional()).failures;
+  const Evaluation_contents contents = read_evaluation_folders(args.positional());
   create_output_folder(outdir, "models");
   std::error_code ec;
   // Copy the model files, so that the merged folder is an evaluation folder like any other.
@@ -442,7 +451,7 @@ inline int run_merge(int argc, char** argv)
     }
   }
   write_file_atomically((fs::path(outdir) / "failures.json").string(),
-                        [&](std::ofstream& out) { write_failures_json(out, failures); });
+                        [&](std::ofstream& out) { write_failures_json(out, contents.failures, contents.small); });
   write_summary({outdir}, repository, (fs::path(outdir) / "summary.json").string());
   std::cerr << outdir << ": merged " << args.positional().size() << " folders\n";
   return EXIT_OK;

@@ -82,6 +82,13 @@ struct Model_failure
   std::string model, message;
 };
 
+// A model with fewer distinct points than the grid's k_max + 1: `points` of the `needed`.
+struct Small_model
+{
+  std::string model;
+  std::size_t needed = 0, points = 0;
+};
+
 // ------------------------------------------------------------------------------------------------
 // writing
 
@@ -175,19 +182,30 @@ inline void write_model_json(std::ostream& out, const Model_result& m, const Eva
   write_json(out, model_json(m, settings));
 }
 
-inline void sort_by_model(std::vector<Model_failure>& failures)
+template <typename Record>
+void sort_by_model(std::vector<Record>& records)
 {
-  std::sort(failures.begin(), failures.end(),
-            [](const Model_failure& x, const Model_failure& y) { return x.model < y.model; });
+  std::sort(records.begin(), records.end(), [](const Record& x, const Record& y) { return x.model < y.model; });
 }
 
-inline void write_failures_json(std::ostream& out, std::vector<Model_failure> failures)
+inline Json small_models_json(const std::vector<Small_model>& small)
+{
+  Json list = Json::array();
+  for(const auto& m : small)
+    list.push_back(Json{{"model", m.model}, {"needed", m.needed}, {"points", m.points}});
+  return list;
+}
+
+// failures.json: the models that failed, with their messages, and those too small for the grid.
+inline void write_failures_json(std::ostream& out, std::vector<Model_failure> failures, std::vector<Small_model> small)
 {
   sort_by_model(failures);
+  sort_by_model(small);
   Json j;
   Json& list = j["failures"] = Json::array();
   for(const auto& f : failures)
     list.push_back(Json{{"model", f.model}, {"message", f.message}});
+  j["too_small"] = small_models_json(small);
   write_json(out, j);
 }
 
@@ -401,22 +419,37 @@ inline Model_result read_model_json(const std::string& path, const std::string& 
   return m;
 }
 
-inline std::vector<Model_failure> read_failures_json(const std::string& path)
+// failures.json, when the folder has one; "too_small" is absent from the files of earlier versions.
+inline void read_failures_json(const std::string& path, std::vector<Model_failure>& failures,
+                               std::vector<Small_model>& small)
 {
-  std::vector<Model_failure> result;
+  failures.clear();
+  small.clear();
   if(!fs::exists(path))
-    return result;
+    return;
   const Json_value j = read_json_file(path, LARGEST_SUMMARY_FILE);
   const Json_object t(j, path);
-  t.only({"failures"});
+  t.only({"failures", "too_small"});
   const Json_value& list = t.array("failures");
   for(std::size_t i = 0; i < list.size(); ++i)
   {
     const Json_object f(list[i], path, "failures[" + std::to_string(i) + "]");
     f.only({"model", "message"});
-    result.push_back({f.string("model"), f.string("message", 65536)});
+    failures.push_back({f.string("model"), f.string("message", 65536)});
   }
-  return result;
+  if(!t.has("too_small"))
+    return;
+  const Json_value& smalls = t.array("too_small");
+  for(std::size_t i = 0; i < smalls.size(); ++i)
+  {
+    const Json_object f(smalls[i], path, "too_small[" + std::to_string(i) + "]");
+    f.only({"model", "needed", "points"});
+    Small_model m;
+    m.model = f.string("model");
+    m.needed = f.integer("needed", 2, LARGEST_EVALUATION_K + 1);
+    m.points = f.integer("points", 0, m.needed - 1);
+    small.push_back(m);
+  }
 }
 
 // Every model file under `folder`/models, as (model path, file path).
@@ -450,6 +483,7 @@ struct Evaluation_contents
   std::size_t merged = 0, dropped = 0, estimated = 0;
   std::vector<Model_result> models; // without their statistics
   std::vector<Model_failure> failures;
+  std::vector<Small_model> small;
 };
 
 // Reads `folders` (one folder, or the shards of one repository); a model in two places is refused.
@@ -466,9 +500,14 @@ inline Evaluation_contents read_evaluation_folders(const std::vector<std::string
     for(const auto& m : f)
       names.emplace_back(m.first, m.second);
     const std::string failures_path = (fs::path(folder) / "failures.json").string();
-    const auto m = read_failures_json(failures_path);
-    c.failures.insert(c.failures.end(), m.begin(), m.end());
-    for(const auto& x : m)
+    std::vector<Model_failure> failed;
+    std::vector<Small_model> small;
+    read_failures_json(failures_path, failed, small);
+    c.failures.insert(c.failures.end(), failed.begin(), failed.end());
+    c.small.insert(c.small.end(), small.begin(), small.end());
+    for(const auto& x : failed)
+      names.emplace_back(x.model, failures_path);
+    for(const auto& x : small)
       names.emplace_back(x.model, failures_path);
   }
   std::sort(names.begin(), names.end());
@@ -497,6 +536,7 @@ inline Evaluation_contents read_evaluation_folders(const std::vector<std::string
     c.models.push_back(std::move(m));
   }
   sort_by_model(c.failures);
+  sort_by_model(c.small);
   return c;
 }
 
@@ -506,6 +546,7 @@ inline Json summary_json(const Evaluation_contents& c, const std::string& reposi
   j["repository"] = repository;
   j["models"] = c.models.size();
   j["failed_models"] = c.failures.size();
+  j["too_small_models"] = c.small.size();
   j["points"] = c.total.points;
   j["merged_duplicates"] = c.merged;
   j["dropped_vertices"] = c.dropped;
@@ -521,6 +562,7 @@ inline Json summary_json(const Evaluation_contents& c, const std::string& reposi
   Json& failed = j["failed"] = Json::array();
   for(const auto& f : c.failures)
     failed.push_back(f.model);
+  j["too_small"] = small_models_json(c.small);
   return j;
 }
 
@@ -540,15 +582,16 @@ inline std::string read_summary_repository(const std::string& folder)
   return Json_object(j, path).string("repository");
 }
 
-// `folder`/summary.json, checked: exactly what its model files and failures.json give.
-inline Json_value read_summary(const std::string& folder)
+// `folder`/summary.json, checked: exactly what its model files and failures.json give (`contents`).
+inline Json_value read_summary(const std::string& folder, Evaluation_contents& contents)
 {
   const std::string path = (fs::path(folder) / "summary.json").string();
   const Json_value j = read_json_file(path, LARGEST_SUMMARY_FILE);
   const std::string repository = Json_object(j, path).string("repository");
+  contents = read_evaluation_folders({folder});
   // the summary as written, NaN as null: compared value for value
-  const Json_value expected = Json_value::parse(
-    summary_json(read_evaluation_folders({folder}), repository).dump(-1, ' ', false, Json::error_handler_t::replace));
+  const Json_value expected =
+    Json_value::parse(summary_json(contents, repository).dump(-1, ' ', false, Json::error_handler_t::replace));
   if(j != expected)
   {
     const Json_value patch = Json_value::diff(expected, j);
@@ -557,6 +600,12 @@ inline Json_value read_summary(const std::string& folder)
                              "); 'sigmoid-neighborhoods merge " + folder + " -o " + folder + "' rewrites it");
   }
   return j;
+}
+
+inline Json_value read_summary(const std::string& folder)
+{
+  Evaluation_contents contents;
+  return read_summary(folder, contents);
 }
 
 } // namespace sigmoid_tool

@@ -41,10 +41,27 @@ inline std::string percent(std::size_t part, std::size_t whole)
   return whole == 0 ? "–" : format("%.2f %%", 100. * double(part) / double(whole));
 }
 
+// `text` in a Markdown table cell: one line, no column break.
+inline std::string markdown_cell(const std::string& text)
+{
+  std::string cell;
+  for(char c : text)
+  {
+    if(c == '|')
+      cell += "\\|";
+    else if(c == '\n' || c == '\r')
+      cell += ' ';
+    else
+      cell += c;
+  }
+  return cell;
+}
+
 struct Repository_summary
 {
   std::string folder, name;
-  Json_value tree; // summary.json, checked by read_summary()
+  Json_value tree;              // summary.json, checked by read_summary()
+  Evaluation_contents contents; // its model files and failures.json: the failures' messages
   bool evaluated() const { return tree.contains("statistics"); }
   // the value at `path` ("statistics/optimal/mean"), NaN for null
   double number(const std::string& path) const
@@ -78,11 +95,16 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
   std::vector<std::string> names;
   for(const auto& r : repos)
     names.push_back(r.name);
-  out << "| repository | models | failed models | points | merged duplicates | dropped vertices |\n"
-         "|---|---:|---:|---:|---:|---:|\n";
+  out << "| repository | models | too small for the grid | failed models | points | merged duplicates | "
+         "dropped vertices |\n"
+         "|---|---:|---:|---:|---:|---:|---:|\n";
   for(const auto& r : repos)
-    out << "| " << r.name << " | " << r.count("models") << " | " << r.count("failed_models") << " | "
-        << r.count("points") << " | " << r.count("merged_duplicates") << " | " << r.count("dropped_vertices") << " |\n";
+    out << "| " << r.name << " | " << r.count("models") << " | " << r.count("too_small_models") << " | "
+        << r.count("failed_models") << " | " << r.count("points") << " | " << r.count("merged_duplicates") << " | "
+        << r.count("dropped_vertices") << " |\n";
+  out << "\n`models`: the models evaluated. Too small for the grid: fewer distinct points than the `k_max + 1` "
+         "the search needs (listed below, not failures). Failed: a model that could not be read or evaluated, "
+         "listed below with its message.\n";
 
   out << "\n## Table 2: `E_dim` over all points\n\n";
   out << "| ";
@@ -163,6 +185,28 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
          "| scanned (FAUST) | 17,918,016 | 0.250 | 0.211 | 0.096 | 62.44 % | 36.86 % | 42.11 % | 14.23 (4.49) |\n"
          "| scanned (Pan et Oursons) | 1,199,992 | 0.383 | 0.320 | 0.134 | 60.70 % | 37.33 % | 42.21 % | 13.54 (4.40) |\n";
 
+  bool any_small = false, any_failed = false;
+  for(const auto& r : repos)
+  {
+    any_small = any_small || !r.contents.small.empty();
+    any_failed = any_failed || !r.contents.failures.empty();
+  }
+  if(any_small)
+  {
+    out << "\n## Models too small for the grid\n\n| repository | model | distinct points | needed (`k_max + 1`) |\n"
+           "|---|---|---:|---:|\n";
+    for(const auto& r : repos)
+      for(const auto& m : r.contents.small)
+        out << "| " << r.name << " | " << markdown_cell(m.model) << " | " << m.points << " | " << m.needed << " |\n";
+  }
+  if(any_failed)
+  {
+    out << "\n## Failed models\n\n| repository | model | message |\n|---|---|---|\n";
+    for(const auto& r : repos)
+      for(const auto& f : r.contents.failures)
+        out << "| " << r.name << " | " << markdown_cell(f.model) << " | " << markdown_cell(f.message) << " |\n";
+  }
+
   out << "\n## Figures\n\n";
   if(figure3)
     out << "![Figure 3](figure3_per_point.png)\n\n" << figure3_note << "\n\n";
@@ -194,7 +238,8 @@ inline int run_report(int argc, char** argv)
       throw Usage_error(folder + " has no summary.json: run evaluate first");
     Repository_summary r;
     r.folder = folder;
-    r.tree = read_summary(folder); // with its model files: the plot script reads only checked files
+    r.tree = read_summary(folder, r.contents); // with its model files: the plot script reads only checked files
+    r.contents.models.clear();
     r.name = r.tree["repository"].get<std::string>();
     repos.push_back(r);
   }
