@@ -208,6 +208,7 @@ inline Model_result model_result(const Model_file& file, const SN::Oriented_poin
     m.orientation = orientation_name(model.orientation);
     m.normal_components = model.orientation_components;
   }
+  m.zero_normals = model.zero_normals;
   m.statistics = SN::Evaluation_statistics(s.k_min, s.k_max, s.a_grid, s.b_grid);
   for(const SN::Point_evaluation& e : evaluations)
     m.statistics.add(e);
@@ -343,6 +344,8 @@ inline int run_evaluate(int argc, char** argv)
         estimated_points += model.normals.size();
         normal_trees += model.orientation_components;
       }
+      else
+        estimated_points += model.zero_normals;
       progress.done(file.name, result.points, file.bytes,
                     std::to_string(result.points) + " points, " + std::to_string(result.statistics.optimal.failures) +
                       " failures");

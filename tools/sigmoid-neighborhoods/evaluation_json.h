@@ -73,6 +73,7 @@ struct Model_result
   std::string normal_method, orientation;
   unsigned int normal_neighbors = 0;
   std::size_t normal_components = 0;
+  std::size_t zero_normals = 0; // zero in the file: all (then estimated) or those estimated from their neighbors
   double k_standard_deviation = std::numeric_limits<double>::quiet_NaN();
   SN::Evaluation_statistics statistics;
 };
@@ -170,6 +171,7 @@ inline Json model_json(const Model_result& m, const Evaluation_settings& setting
     j["orientation"] = m.orientation;
     j["normal_components"] = m.normal_components;
   }
+  j["zero_normals"] = m.zero_normals;
   j["failures"] = m.statistics.optimal.failures;
   j["k_standard_deviation"] = m.k_standard_deviation;
   j["settings"] = settings_json(settings);
@@ -381,8 +383,8 @@ inline Model_result read_model_json(const std::string& path, const std::string& 
   const Json_value j = read_json_file(path, LARGEST_MODEL_FILE);
   const Json_object t(j, path);
   t.only({"model", "points", "input_vertices", "merged_duplicates", "dropped_vertices", "normals", "normal_method",
-          "normal_neighbors", "orientation", "normal_components", "failures", "k_standard_deviation", "settings",
-          "statistics"});
+          "normal_neighbors", "orientation", "normal_components", "zero_normals", "failures", "k_standard_deviation",
+          "settings", "statistics"});
   settings = read_settings(t);
   Model_result m;
   m.model = t.string("model");
@@ -410,6 +412,10 @@ inline Model_result read_model_json(const std::string& path, const std::string& 
     for(const char* key : {"normal_method", "normal_neighbors", "orientation", "normal_components"})
       if(t.has(key))
         t.fail(key, "is written for estimated normals only");
+  // absent from the files of earlier versions, which refused zero normals
+  m.zero_normals = t.integer_or("zero_normals", 0, 0, m.points);
+  if(m.normals == "mesh" && m.zero_normals > 0)
+    t.fail("zero_normals", "is not 0 for mesh normals");
   if(t.integer("failures") != m.statistics.optimal.failures)
     t.fail("failures", "is not statistics.optimal.failures");
   m.k_standard_deviation = t.number("k_standard_deviation", std::numeric_limits<double>::quiet_NaN());
@@ -481,6 +487,8 @@ struct Evaluation_contents
   Evaluation_settings settings;
   SN::Evaluation_statistics total;
   std::size_t merged = 0, dropped = 0, estimated = 0;
+  // points with estimated normals, models with zero normals in the file and those points
+  std::size_t estimated_points = 0, with_zero_normals = 0, zero_normals = 0;
   std::vector<Model_result> models; // without their statistics
   std::vector<Model_failure> failures;
   std::vector<Small_model> small;
@@ -532,6 +540,9 @@ inline Evaluation_contents read_evaluation_folders(const std::vector<std::string
     c.merged += m.merged_duplicates;
     c.dropped += m.dropped_vertices;
     c.estimated += (m.normals == "estimated");
+    c.estimated_points += m.normals == "estimated" ? m.points : m.zero_normals;
+    c.with_zero_normals += (m.zero_normals > 0);
+    c.zero_normals += m.zero_normals;
     m.statistics = SN::Evaluation_statistics();
     c.models.push_back(std::move(m));
   }
@@ -551,6 +562,9 @@ inline Json summary_json(const Evaluation_contents& c, const std::string& reposi
   j["merged_duplicates"] = c.merged;
   j["dropped_vertices"] = c.dropped;
   j["models_with_estimated_normals"] = c.estimated;
+  j["points_with_estimated_normals"] = c.estimated_points;
+  j["models_with_zero_normals"] = c.with_zero_normals;
+  j["zero_normals"] = c.zero_normals;
   if(c.any_model)
   {
     j["settings"] = settings_json(c.settings);

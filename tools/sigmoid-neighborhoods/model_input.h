@@ -168,6 +168,11 @@ inline std::string model_description(const SN::Oriented_point_set& model)
     s += "mesh vertex normals, ";
   else
     s += "normals from the file, ";
+  if(model.zero_normals > 0)
+    s += model.normals_estimated ? "the file's normals all zero, "
+                                 : std::to_string(model.zero_normals) + " zero normal" +
+                                     (model.zero_normals == 1 ? "" : "s") +
+                                     " estimated and oriented by the neighbors' normals, ";
   if(model.is_mesh)
     s += std::to_string(model.dropped_vertices) + " dropped vertices, ";
   s += std::to_string(model.merged_duplicates) + " merged duplicates)";

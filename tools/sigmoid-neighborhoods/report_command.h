@@ -102,6 +102,34 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
     out << "| " << r.name << " | " << r.count("models") << " | " << r.count("too_small_models") << " | "
         << r.count("failed_models") << " | " << r.count("points") << " | " << r.count("merged_duplicates") << " | "
         << r.count("dropped_vertices") << " |\n";
+  out << "\n| repository | models with estimated normals | points with estimated normals | models with zero normals "
+         "in the file | zero normals | estimation, orientation |\n|---|---:|---:|---:|---:|---|\n";
+  for(const auto& r : repos)
+  {
+    std::string how = "–";
+    if(r.evaluated())
+    {
+      const Json_value& s = r.tree["settings"];
+      const std::string orientation = s["orientation"].get<std::string>();
+      how = "PCA on " + std::to_string(s["normal_neighbors"].get<unsigned int>()) + " neighbors, " +
+            (orientation == "mst"         ? "a minimum spanning forest"
+             : orientation == "viewpoint" ? "towards the viewpoint"
+             : orientation == "up"        ? "upwards"
+             : orientation == "none"      ? "not oriented"
+                                          : "as recorded") +
+            "; zero normals by their neighbors' normals";
+      if(s["normals"] == "jet")
+        how.replace(0, 3, "jet fitting");
+      else if(s["normals"] == "file")
+        how = "none: `--normals file`";
+    }
+    out << "| " << r.name << " | " << r.count("models_with_estimated_normals") << " | "
+        << r.count("points_with_estimated_normals") << " | " << r.count("models_with_zero_normals") << " | "
+        << r.count("zero_normals") << " | " << how << " |\n";
+  }
+  out << "\nNormals are the mesh's vertex normals or the file's; a point set without normals, or whose normal "
+         "columns are all zero, gets estimated ones; a few zero normals among the file's are estimated and "
+         "turned to agree with their neighbors' normals.\n";
   out << "\n`models`: the models evaluated. Too small for the grid: fewer distinct points than the `k_max + 1` "
          "the search needs (listed below, not failures). Failed: a model that could not be read or evaluated, "
          "listed below with its message.\n";

@@ -90,6 +90,7 @@ model("model_k_mean_edited.json", lambda m: setitem(m, ["statistics", "k_mean"],
 model("model_estimated_keys_with_file_normals.json", lambda m: setitem(m, ["normal_method"], "pca"))
 model("model_min_above_max.json", lambda m: setitem(m, ["statistics", "equal", "min"], 2.0))
 model("model_settings_is_a_string.json", lambda m: setitem(m, ["settings"], "default"))
+model("model_zero_normals_beyond_points.json", lambda m: setitem(m, ["zero_normals"], 1000))
 
 summary_text = text("summary.json")
 write("summary_truncated.json", summary_text[:144])
@@ -107,3 +108,4 @@ failures("failures_missing_message.json", lambda f: f["failures"][0].pop("messag
 failures("failures_lists_an_evaluated_model.json",
          lambda f: f["failures"].append({"model": "sphere.xyz", "message": "forged"}))
 failures("failures_unknown_key.json", lambda f: setitem(f, ["skipped"], []))
+failures("failures_too_small_not_small.json", lambda f: setitem(f, ["too_small", 0, "points"], 30))
