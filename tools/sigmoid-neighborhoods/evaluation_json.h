@@ -588,14 +588,6 @@ inline void write_summary(const std::vector<std::string>& folders, const std::st
   write_file_atomically(summary_path, [&](std::ofstream& out) { write_json(out, j); });
 }
 
-// The repository named by `folder`/summary.json, checked on its own only.
-inline std::string read_summary_repository(const std::string& folder)
-{
-  const std::string path = (fs::path(folder) / "summary.json").string();
-  const Json_value j = read_json_file(path, LARGEST_SUMMARY_FILE);
-  return Json_object(j, path).string("repository");
-}
-
 // `folder`/summary.json, checked: exactly what its model files and failures.json give (`contents`).
 inline Json_value read_summary(const std::string& folder, Evaluation_contents& contents)
 {

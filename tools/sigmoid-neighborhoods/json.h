@@ -193,7 +193,6 @@ public:
       fail(name(key), "is a string of " + std::to_string(s.size()) + " bytes, longer than " + std::to_string(longest));
     return s;
   }
-  std::string string_or(const char* key, const std::string& fallback) const { return has(key) ? string(key) : fallback; }
 
   // One of `values`.
   std::string choice(const char* key, std::initializer_list<const char*> values) const

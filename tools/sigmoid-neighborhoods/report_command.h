@@ -102,6 +102,9 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
     out << "| " << r.name << " | " << r.count("models") << " | " << r.count("too_small_models") << " | "
         << r.count("failed_models") << " | " << r.count("points") << " | " << r.count("merged_duplicates") << " | "
         << r.count("dropped_vertices") << " |\n";
+  out << "\n`models`: the models evaluated. Too small for the grid: fewer distinct points than the `k_max + 1` "
+         "the search needs (listed below, not failures). Failed: a model that could not be read or evaluated, "
+         "listed below with its message.\n";
   out << "\n| repository | models with estimated normals | points with estimated normals | models with zero normals "
          "in the file | zero normals | estimation, orientation |\n|---|---:|---:|---:|---:|---|\n";
   for(const auto& r : repos)
@@ -130,9 +133,6 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
   out << "\nNormals are the mesh's vertex normals or the file's; a point set without normals, or whose normal "
          "columns are all zero, gets estimated ones; a few zero normals among the file's are estimated and "
          "turned to agree with their neighbors' normals.\n";
-  out << "\n`models`: the models evaluated. Too small for the grid: fewer distinct points than the `k_max + 1` "
-         "the search needs (listed below, not failures). Failed: a model that could not be read or evaluated, "
-         "listed below with its message.\n";
 
   out << "\n## Table 2: `E_dim` over all points\n\n";
   out << "| ";
