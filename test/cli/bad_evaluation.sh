@@ -70,9 +70,18 @@ while IFS="$tab" read -r file target code piece; do
 done < "$corpus/EXPECTED.txt"
 
 # generated: too large for the repository
-replace /dev/null summary.json
-head -c 400000 /dev/zero | tr '\0' '[' > "$folder/summary.json"
-check "400 KB of nested brackets" "$folder" 2 "nested deeper than 16" summary.json
+replace /dev/null models/sphere.xyz.json
+head -c 400000 /dev/zero | tr '\0' '[' > "$folder/models/sphere.xyz.json"
+check "400 KB of nested brackets" "$folder" 2 "nested deeper than 16" models/sphere.xyz.json
+replace /dev/null failures.json
+{ printf '{"failures": '; head -c 400000 /dev/zero | tr '\0' '['; } > "$folder/failures.json"
+check "400 KB of nested brackets in failures.json" "$folder" 2 "nested deeper than 16" failures.json
+replace /dev/null failures.json
+awk 'BEGIN { printf "["; for(i = 0; i < 2097000; ++i) printf "0,"; print "0]" }' > "$folder/failures.json"
+check "an array of 2,097,001 numbers within 4 MiB" "$folder" 2 "the file is an array, expected an object" failures.json
+replace /dev/null failures.json
+head -c 4194305 /dev/zero | tr '\0' ' ' > "$folder/failures.json"
+check "a failures.json of 4 MiB + 1 byte" "$folder" 2 "larger than the 4 MiB" failures.json
 replace /dev/null models/sphere.xyz.json
 { printf '{"model": "sphere.xyz", "settings": {"a_grid": ['; seq 1 10000000 | tr '\n' ','; printf '0]}}\n'; } \
   > "$folder/models/sphere.xyz.json"
@@ -92,10 +101,18 @@ awk 'BEGIN { printf "{\"model\": \"sphere.xyz\", \"settings\": {\"k_min\": 6, \"
 check "a string of 900,000 bytes" "$folder" 2 "settings.barycenter is a string of 900000 bytes" models/sphere.xyz.json
 replace /dev/null summary.json
 head -c 1048577 /dev/zero | tr '\0' ' ' > "$folder/summary.json"
-check "a summary of 1 MiB of spaces" "$folder" 2 "not valid JSON" summary.json
+check "a summary of 1 MiB of spaces" "$folder" 2 "more than twice the" summary.json
+replace /dev/null summary.json
+head -c 3000 "$work/base/summary.json" > "$folder/summary.json"
+head -c 60000 /dev/zero | tr '\0' ' ' >> "$folder/summary.json"
+check "a truncated summary padded with 60 KB of spaces" "$folder" 2 "not valid JSON" summary.json
 
 # a model in two shards
 cp -r "$work/base" "$work/shard_copy"
 commands=merge
 check "a model in two shards" "$work/base" 2 "is also in" '*' "$work/shard_copy"
+# merge FOLDER -o FOLDER rewrites an edited summary (or one of an earlier version) from the model files
+replace "$corpus/summary_points_edited.json" summary.json
+"$tool" merge "$folder" -o "$folder" 2> "$work/err.txt" || { echo "merge in place: $(cat "$work/err.txt")"; exit 1; }
+cmp "$folder/summary.json" "$work/base/summary.json" || { echo "merge in place: another summary"; exit 1; }
 echo "bad-evaluation-ok $cases cases"

@@ -422,8 +422,11 @@ inline int run_merge(int argc, char** argv)
     const fs::path summary = fs::path(folder) / "summary.json";
     if(!fs::exists(summary))
       throw Usage_error(folder + " has no summary.json: not an evaluation folder");
-    // each folder checked whole (its summary against its models) before anything is written
-    const std::string name = read_summary(folder)["repository"].get<std::string>();
+    // each folder checked whole (its summary against its models) before anything is written, but
+    // for the summary that this merge replaces
+    std::error_code ec;
+    const std::string name = fs::equivalent(folder, outdir, ec) ? read_summary_repository(folder)
+                                                                : read_summary(folder)["repository"].get<std::string>();
     if(repository.empty())
       repository = name;
     else if(!args.has("--repository") && name != repository)

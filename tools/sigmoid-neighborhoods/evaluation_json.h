@@ -433,7 +433,7 @@ inline void read_failures_json(const std::string& path, std::vector<Model_failur
   small.clear();
   if(!fs::exists(path))
     return;
-  const Json_value j = read_json_file(path, LARGEST_SUMMARY_FILE);
+  const Json_value j = read_json_file(path, LARGEST_FAILURES_FILE);
   const Json_object t(j, path);
   t.only({"failures", "too_small"});
   const Json_value& list = t.array("failures");
@@ -588,13 +588,29 @@ inline void write_summary(const std::vector<std::string>& folders, const std::st
   write_file_atomically(summary_path, [&](std::ofstream& out) { write_json(out, j); });
 }
 
+// The repository named by `folder`/summary.json, checked on its own only: for `merge FOLDER -o FOLDER`,
+// which rewrites a summary (of an earlier version, or edited) from the folder's model files.
+inline std::string read_summary_repository(const std::string& folder)
+{
+  const std::string path = (fs::path(folder) / "summary.json").string();
+  const Json_value j = read_json_file(path, LARGEST_SUMMARY_FILE);
+  return Json_object(j, path).string("repository");
+}
+
 // `folder`/summary.json, checked: exactly what its model files and failures.json give (`contents`).
 inline Json_value read_summary(const std::string& folder, Evaluation_contents& contents)
 {
   const std::string path = (fs::path(folder) / "summary.json").string();
+  // the model files first: they bound the summary's size before it is parsed
+  contents = read_evaluation_folders({folder});
+  const std::uintmax_t expected_bytes = summary_json(contents, std::string()).dump(2).size();
+  std::error_code ec;
+  const std::uintmax_t bytes = fs::file_size(path, ec);
+  if(!ec && bytes > 2 * expected_bytes + 65536)
+    throw json_error(path, "a file of " + std::to_string(bytes) + " bytes, more than twice the " +
+                             std::to_string(expected_bytes) + " of the summary its model files give");
   const Json_value j = read_json_file(path, LARGEST_SUMMARY_FILE);
   const std::string repository = Json_object(j, path).string("repository");
-  contents = read_evaluation_folders({folder});
   // the summary as written, NaN as null: compared value for value
   const Json_value expected =
     Json_value::parse(summary_json(contents, repository).dump(-1, ' ', false, Json::error_handler_t::replace));

@@ -35,10 +35,13 @@ typedef nlohmann::ordered_json Json;
 typedef nlohmann::json Json_value;
 
 // The largest evaluation file read: a model file of the tool holds some 20 KB with the default
-// grids, 1 MiB leaves room for grids of some 200 angles; summary.json and failures.json hold about
-// 110 bytes per model, 16 MiB a repository of about 150,000 models.
+// grids, 1 MiB leaves room for grids of some 200 angles; summary.json holds about 110 bytes per
+// model, 16 MiB a repository of about 150,000 models (and it is refused first when larger than twice
+// the summary its model files give); failures.json about 100 bytes per failed model, 4 MiB some
+// 40,000 of them. Parsed, a file takes up to some 26 times its size.
 constexpr std::uintmax_t LARGEST_MODEL_FILE = std::uintmax_t(1) << 20;
 constexpr std::uintmax_t LARGEST_SUMMARY_FILE = std::uintmax_t(1) << 24;
+constexpr std::uintmax_t LARGEST_FAILURES_FILE = std::uintmax_t(1) << 22;
 
 // The deepest nesting of arrays and objects read: the tool's files nest 4 deep.
 constexpr int DEEPEST_JSON = 16;
