@@ -24,7 +24,7 @@ CGAL_DATA_ARCHIVE = /usr/share/doc/libcgal-dev/data.tar.gz
 CORPUS_DIR = $(BUILD_DIR)/cgal-data
 TOOL = $(BUILD_DIR)/tools/sigmoid-neighborhoods/sigmoid-neighborhoods
 
-.PHONY: all deps test-deps configure build doc test sanitize fuzz evaluate corpus denoising classification python clean
+.PHONY: all deps test-deps configure build doc test sanitize fuzz fuzz-evaluation evaluate corpus denoising classification python clean
 
 all: build
 
@@ -96,6 +96,21 @@ fuzz: deps
 	  -max_len=1048576 -timeout=10 -rss_limit_mb=512 -malloc_limit_mb=256 -artifact_prefix=$(CURDIR)/$(FUZZ_DIR)/artifacts/ \
 	  -print_final_stats=1
 
+# The second fuzz target: the readers of the evaluation files (model files, summary.json, failures.json),
+# in the same folder, on $(FUZZ_DIR)/evaluation_corpus; failing inputs go to $(FUZZ_DIR)/artifacts/.
+fuzz-evaluation: deps
+	@command -v clang++ > /dev/null || { echo "make fuzz-evaluation needs clang and libFuzzer (Debian: clang libclang-rt-dev)" >&2; exit 1; }
+	CC=clang CXX=clang++ cmake -S . -B $(FUZZ_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DSIGMOID_NEIGHBORHOODS_BUILD_FUZZER=ON -DSIGMOID_NEIGHBORHOODS_BUILD_EXAMPLES=OFF \
+	  -DSIGMOID_NEIGHBORHOODS_BUILD_BENCHMARKS=OFF
+	cmake --build $(FUZZ_DIR) --target fuzz_evaluation_files -j $(JOBS)
+	@mkdir -p $(FUZZ_DIR)/evaluation_corpus $(FUZZ_DIR)/artifacts $(FUZZ_DIR)/tmp
+	cp test/fuzz/evaluation_seeds/* $(FUZZ_DIR)/evaluation_corpus/
+	TMPDIR=$(CURDIR)/$(FUZZ_DIR)/tmp ASAN_OPTIONS=quarantine_size_mb=64 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
+	  $(FUZZ_DIR)/test/fuzz/fuzz_evaluation_files $(FUZZ_DIR)/evaluation_corpus -max_total_time=$(FUZZ_SECONDS) \
+	  -max_len=1048576 -timeout=5 -rss_limit_mb=512 -malloc_limit_mb=256 -artifact_prefix=$(CURDIR)/$(FUZZ_DIR)/artifacts/ \
+	  -print_final_stats=1
+
 # The Python module (python/), installed without network into a virtual environment on Debian's
 # /usr/bin/python3 (which sees Debian's numpy): `$(PYTHON_VENV)/bin/python -c "import sigmoid_neighborhoods"`.
 PYTHON_VENV ?= .venv
@@ -110,12 +125,12 @@ corpus: deps
 	@[ -f $(CORPUS_DIR)/.extracted ] || { tar -xzf $(CGAL_DATA_ARCHIVE) -C $(CORPUS_DIR) && touch $(CORPUS_DIR)/.extracted; }
 
 # The main job: the evaluation of the embedded default corpus, CGAL's meshes as a clean repository
-# and its point sets with normals as a scanned one, then the report with Figure 3 on the fandisk.
+# and all its point sets as a scanned one (normals estimated where a file has none), then the report
+# with Figure 3 on the fandisk.
 evaluate: build corpus
 	@mkdir -p $(RESULTS_DIR)
 	$(TOOL) evaluate $(CORPUS_DIR)/data/meshes -o $(RESULTS_DIR)/clean --repository "CGAL meshes"
-	$(TOOL) evaluate $(CORPUS_DIR)/data/points_3 -o $(RESULTS_DIR)/scanned --repository "CGAL point sets" \
-	  --only-with-normals
+	$(TOOL) evaluate $(CORPUS_DIR)/data/points_3 -o $(RESULTS_DIR)/scanned --repository "CGAL point sets"
 	$(TOOL) report $(RESULTS_DIR)/clean $(RESULTS_DIR)/scanned -o $(RESULTS_DIR) \
 	  --figure-model $(CORPUS_DIR)/data/meshes/fandisk.off
 	$(TOOL) optimal $(CORPUS_DIR)/data/meshes/fandisk.off -o $(RESULTS_DIR)/fandisk_optimal.csv \

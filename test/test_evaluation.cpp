@@ -220,6 +220,36 @@ TEST_CASE("evaluate: a corrupt model lands in failures.json, the others are unaf
   CHECK(summary.find("\"failed_models\": 2") != std::string::npos);
 }
 
+TEST_CASE("evaluate: a model too small for the grid is listed apart from the failed ones", "[evaluation][cli]")
+{
+  const fs::path in = out("small_in");
+  fs::create_directories(in);
+  fs::copy(models() / "spheres" / "sphere0.xyz", in / "sphere0.xyz");
+  {
+    std::ofstream tiny(in / "tiny.xyz");
+    for(int i = 0; i < 8; ++i)
+      tiny << (i & 1) << ' ' << ((i >> 1) & 1) << ' ' << ((i >> 2) & 1) << " 0 0 1\n";
+  }
+  std::ofstream(in / "empty.xyz");
+  REQUIRE(run("evaluate " + in.string() + " -o " + out("small_run").string() + " --repository demo") == 0);
+  const std::string failures = read_text(out("small_run") / "failures.json");
+  CHECK(failures.find("\"model\": \"tiny.xyz\",\n      \"needed\": 21,\n      \"points\": 8") != std::string::npos);
+  const std::string summary = read_text(out("small_run") / "summary.json");
+  CHECK(summary.find("\"models\": 1,") != std::string::npos);
+  CHECK(summary.find("\"failed_models\": 1,") != std::string::npos);
+  CHECK(summary.find("\"too_small_models\": 1,") != std::string::npos);
+  CHECK(summary.find("\"failed\": [\n    \"empty.xyz\"\n  ]") != std::string::npos);
+  // the report lists both, the failure with its message
+  run("report " + out("small_run").string() + " -o " + out("small_report").string());
+  const std::string md = read_text(out("small_report") / "report.md");
+  CHECK(md.find("| demo | 1 | 1 | 1 | 300 |") != std::string::npos);
+  CHECK(md.find("| demo | tiny.xyz | 8 | 21 |") != std::string::npos);
+  CHECK(md.find("| demo | empty.xyz | the file is empty |") != std::string::npos);
+  // merge keeps both lists: the merged summary is the same
+  CHECK(run("merge " + out("small_run").string() + " -o " + out("small_merged").string()) == 0);
+  CHECK(read_text(out("small_merged") / "summary.json") == summary);
+}
+
 namespace {
 
 // Starts the tool in a child process, stderr to `error_file`; `in_child` runs just before exec.

@@ -126,6 +126,7 @@ py::dict read(const py::object& path, const std::string& normals, unsigned int k
   result["orientation_components"] = set.orientation_components;
   result["input_vertices"] = set.input_vertices;
   result["merged_duplicates"] = set.merged_duplicates;
+  result["zero_normals"] = set.zero_normals;
   result["dropped_vertices"] = set.dropped_vertices;
   return result;
 }
@@ -241,7 +242,7 @@ Returns
 dict with "points" (n, 3) float64; "normals" (n, 3) float64 or None; "labels" int32 (LAS classification,
 PLY label/class/classification) or None; "intensity" uint16, "return_number" and "number_of_returns"
 uint8, "gps_time" float64 (LAS) or None; "is_mesh", "normals_estimated" (bool);
-"orientation_components", "input_vertices", "merged_duplicates", "dropped_vertices" (int).
+"orientation_components", "input_vertices", "merged_duplicates", "dropped_vertices", "zero_normals" (int).
 
 Raises
 ------

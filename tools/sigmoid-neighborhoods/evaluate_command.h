@@ -208,6 +208,7 @@ inline Model_result model_result(const Model_file& file, const SN::Oriented_poin
     m.orientation = orientation_name(model.orientation);
     m.normal_components = model.orientation_components;
   }
+  m.zero_normals = model.zero_normals;
   m.statistics = SN::Evaluation_statistics(s.k_min, s.k_max, s.a_grid, s.b_grid);
   for(const SN::Point_evaluation& e : evaluations)
     m.statistics.add(e);
@@ -305,6 +306,7 @@ inline int run_evaluate(int argc, char** argv)
   CGAL::Real_timer timer;
   timer.start();
   std::vector<Model_failure> failures;
+  std::vector<Small_model> too_small;
   std::vector<std::string> skipped_without_normals;
   std::size_t evaluated = 0, resumed = 0, points = 0, estimated_models = 0, estimated_points = 0, normal_trees = 0;
   for(const Model_file& file : models)
@@ -342,6 +344,8 @@ inline int run_evaluate(int argc, char** argv)
         estimated_points += model.normals.size();
         normal_trees += model.orientation_components;
       }
+      else
+        estimated_points += model.zero_normals;
       progress.done(file.name, result.points, file.bytes,
                     std::to_string(result.points) + " points, " + std::to_string(result.statistics.optimal.failures) +
                       " failures");
@@ -349,6 +353,13 @@ inline int run_evaluate(int argc, char** argv)
     catch(const Usage_error&)
     {
       throw; // the output folder is unusable: stop
+    }
+    catch(const Too_small_for_the_grid& e)
+    {
+      too_small.push_back({file.name, e.needed, e.points});
+      progress.done(file.name, 0, file.bytes,
+                    "too small for the grid: " + std::to_string(e.points) + " distinct points, needs " +
+                      std::to_string(e.needed));
     }
     catch(const std::bad_alloc&)
     {
@@ -366,35 +377,32 @@ inline int run_evaluate(int argc, char** argv)
 
   const std::string dir = outdir;
   write_file_atomically((fs::path(dir) / "failures.json").string(),
-                        [&](std::ofstream& out) { write_failures_json(out, failures); });
+                        [&](std::ofstream& out) { write_failures_json(out, failures, too_small); });
   write_summary({dir}, repository, (fs::path(dir) / "summary.json").string());
-  write_file_atomically((fs::path(dir) / "run.json").string(), [&](std::ofstream& out) {
-    Json_writer w(out);
-    w.begin_object()
-      .value("command", "evaluate")
-      .value("date", iso_date())
-      .value("host", host_name())
-      .value("seconds", timer.time())
-      .value("threads", unsigned(options.threads))
-      .value("shard", std::to_string(shard_index) + "/" + std::to_string(shard_count))
-      .value("models_in_shard", models.size())
-      .value("models_evaluated", evaluated)
-      .value("models_resumed", resumed)
-      .value("models_failed", failures.size())
-      .value("points_evaluated", points)
-      .value("models_with_estimated_normals", estimated_models)
-      .value("points_with_estimated_normals", estimated_points)
-      .value("spanning_forest_trees", normal_trees);
-    write_settings(w, settings);
-    w.begin_array("inputs");
-    for(const auto& input : args.positional())
-      w.value(nullptr, fs::absolute(input).lexically_normal().string());
-    w.end_array();
-    w.array("skipped_without_normals", skipped_without_normals);
-    w.end_object().finish();
-  });
-  std::cerr << outdir << ": " << evaluated << " models evaluated, " << resumed << " resumed, " << failures.size()
-            << " failed, " << skipped_without_normals.size() << " skipped, " << points << " points, "
+  Json run;
+  run["command"] = "evaluate";
+  run["date"] = iso_date();
+  run["host"] = host_name();
+  run["seconds"] = timer.time();
+  run["threads"] = unsigned(options.threads);
+  run["shard"] = std::to_string(shard_index) + "/" + std::to_string(shard_count);
+  run["models_in_shard"] = models.size();
+  run["models_evaluated"] = evaluated;
+  run["models_resumed"] = resumed;
+  run["models_failed"] = failures.size();
+  run["models_too_small"] = too_small.size();
+  run["points_evaluated"] = points;
+  run["models_with_estimated_normals"] = estimated_models;
+  run["points_with_estimated_normals"] = estimated_points;
+  run["spanning_forest_trees"] = normal_trees;
+  run["settings"] = settings_json(settings);
+  Json& inputs = run["inputs"] = Json::array();
+  for(const auto& input : args.positional())
+    inputs.push_back(fs::absolute(input).lexically_normal().string());
+  run["skipped_without_normals"] = skipped_without_normals;
+  write_file_atomically((fs::path(dir) / "run.json").string(), [&](std::ofstream& out) { write_json(out, run); });
+  std::cerr << outdir << ": " << evaluated << " models evaluated, " << resumed << " resumed, " << too_small.size()
+            << " too small for the grid, " << failures.size() << " failed, " << skipped_without_normals.size() << " skipped, " << points << " points, "
             << Progress::duration(timer.time()) << '\n';
   return EXIT_OK;
 }
@@ -409,29 +417,24 @@ inline int run_merge(int argc, char** argv)
   if(outdir.empty() || args.positional().empty())
     throw Usage_error("merge needs OUTDIR... -o OUTDIR");
   std::string repository = args.get("--repository");
-  std::vector<Model_failure> failures;
   for(const auto& folder : args.positional())
   {
     const fs::path summary = fs::path(folder) / "summary.json";
     if(!fs::exists(summary))
       throw Usage_error(folder + " has no summary.json: not an evaluation folder");
-    const std::string name = read_json(summary.string()).get<std::string>("repository");
+    // each folder checked whole (its summary against its models) before anything is written, but
+    // for the summary that this merge replaces
+    std::error_code ec;
+    const std::string name = fs::equivalent(folder, outdir, ec) ? read_summary_repository(folder)
+                                                                : read_summary(folder)["repository"].get<std::string>();
     if(repository.empty())
       repository = name;
     else if(!args.has("--repository") && name != repository)
       throw Usage_error("folders of different repositories (" + repository + ", " + name +
                         "): pass --repository to merge them anyway");
-    const auto f = read_failures_json((fs::path(folder) / "failures.json").string());
-    failures.insert(failures.end(), f.begin(), f.end());
   }
-  std::vector<std::string> names;
-  for(const auto& folder : args.positional())
-    for(const auto& m : model_files(folder))
-      names.push_back(m.first);
-  std::sort(names.begin(), names.end());
-  const auto twice = std::adjacent_find(names.begin(), names.end());
-  if(twice != names.end())
-    throw Usage_error("model " + *twice + " is in two of the folders to merge");
+  // a model in two of the folders, and the models' settings, refused before anything is written
+  const Evaluation_contents contents = read_evaluation_folders(args.positional());
   create_output_folder(outdir, "models");
   std::error_code ec;
   // Copy the model files, so that the merged folder is an evaluation folder like any other.
@@ -454,7 +457,7 @@ inline int run_merge(int argc, char** argv)
     }
   }
   write_file_atomically((fs::path(outdir) / "failures.json").string(),
-                        [&](std::ofstream& out) { write_failures_json(out, failures); });
+                        [&](std::ofstream& out) { write_failures_json(out, contents.failures, contents.small); });
   write_summary({outdir}, repository, (fs::path(outdir) / "summary.json").string());
   std::cerr << outdir << ": merged " << args.positional().size() << " folders\n";
   return EXIT_OK;

@@ -1,181 +1,306 @@
 // Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// JSON for the evaluation files. Reading uses Boost.PropertyTree; writing is done here because
-// PropertyTree's writer quotes every number, and the files must round-trip doubles (17 digits).
+// JSON for the evaluation files, through nlohmann::json. Writing keeps the keys in the order they
+// are set and writes doubles as the shortest text that reads back to the same double (non-finite
+// ones as null). Reading treats a file as untrusted input, like a point file: a size cap before
+// parsing, a depth cap before the parser (recursive) sees the text, and checked accessors that
+// name the file and the key of anything wrong, as a Usage_error (exit code 2).
 
 #ifndef SIGMOID_NEIGHBORHOODS_TOOL_JSON_H
 #define SIGMOID_NEIGHBORHOODS_TOOL_JSON_H
 
-#include <boost/property_tree/json_parser.hpp>
-#include <boost/property_tree/ptree.hpp>
+#include "command_line.h"
 
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <iterator>
 #include <limits>
 #include <ostream>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace sigmoid_tool {
 
-typedef boost::property_tree::ptree Json;
+// What the tool writes: keys in insertion order, so that a file reads as the code writes it.
+typedef nlohmann::ordered_json Json;
 
-// A streaming writer with two-space indentation; non-finite numbers become null.
-class Json_writer
+// What the tool reads.
+typedef nlohmann::json Json_value;
+
+// The largest evaluation file read: a model file of the tool holds some 20 KB with the default
+// grids, 1 MiB leaves room for grids of some 200 angles; summary.json holds about 110 bytes per
+// model, 16 MiB a repository of about 150,000 models (and it is refused first when larger than twice
+// the summary its model files give); failures.json about 100 bytes per failed model, 4 MiB some
+// 40,000 of them. Parsed, a file takes up to some 26 times its size.
+constexpr std::uintmax_t LARGEST_MODEL_FILE = std::uintmax_t(1) << 20;
+constexpr std::uintmax_t LARGEST_SUMMARY_FILE = std::uintmax_t(1) << 24;
+constexpr std::uintmax_t LARGEST_FAILURES_FILE = std::uintmax_t(1) << 22;
+
+// The deepest nesting of arrays and objects read: the tool's files nest 4 deep.
+constexpr int DEEPEST_JSON = 16;
+
+// A JSON file as written by the tool, with a final newline. Strings that are not UTF-8 (a file
+// name in another encoding) get U+FFFD for their bad bytes, so that the file stays JSON.
+inline void write_json(std::ostream& out, const Json& j)
+{
+  out << j.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
+}
+
+// `text` as a JSON string of the tool's files reads back (see write_json).
+inline std::string as_written(const std::string& text)
+{
+  return Json_value::parse(Json(text).dump(-1, ' ', false, Json::error_handler_t::replace)).get<std::string>();
+}
+
+// The depth of the deepest array or object of `text`, counted without parsing; stops counting
+// beyond `limit`.
+inline int json_depth(const std::string& text, int limit)
+{
+  int depth = 0, deepest = 0;
+  bool in_string = false, escaped = false;
+  for(char c : text)
+  {
+    if(in_string)
+    {
+      if(escaped)
+        escaped = false;
+      else if(c == '\\')
+        escaped = true;
+      else if(c == '"')
+        in_string = false;
+      continue;
+    }
+    if(c == '"')
+      in_string = true;
+    else if(c == '[' || c == '{')
+    {
+      deepest = (std::max)(deepest, ++depth);
+      if(deepest > limit)
+        break;
+    }
+    else if(c == ']' || c == '}')
+      --depth;
+  }
+  return deepest;
+}
+
+// An error in an evaluation file: `FILE: what is wrong`, exit code 2.
+inline Usage_error json_error(const std::string& file, const std::string& what) { return Usage_error(file + ": " + what); }
+
+// Reads and parses `path`, refused when larger than `largest` bytes or nested deeper than DEEPEST_JSON.
+inline Json_value read_json_file(const std::string& path, std::uintmax_t largest)
+{
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if(!fs::is_regular_file(path, ec))
+    throw json_error(path, "not a file");
+  const std::uintmax_t bytes = fs::file_size(path, ec);
+  if(ec)
+    throw json_error(path, "cannot read the file (" + ec.message() + ")");
+  if(bytes > largest)
+    throw json_error(path, "a file of " + std::to_string(bytes) + " bytes, larger than the " +
+                             std::to_string(largest >> 20) + " MiB of an evaluation file");
+  std::ifstream in(path, std::ios::binary);
+  if(!in)
+    throw json_error(path, "cannot open the file");
+  std::string text;
+  text.reserve(std::size_t(bytes));
+  text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  if(text.size() > largest) // grown since its size was read
+    throw json_error(path, "larger than the " + std::to_string(largest >> 20) + " MiB of an evaluation file");
+  if(json_depth(text, DEEPEST_JSON) > DEEPEST_JSON)
+    throw json_error(path, "arrays or objects nested deeper than " + std::to_string(DEEPEST_JSON) +
+                             ": not an evaluation file");
+  try
+  {
+    return Json_value::parse(text);
+  }
+  catch(const Json_value::exception& e)
+  {
+    // "[json.exception.parse_error.101] parse error at line 3, column 5: ...": the part after the tag
+    std::string what = e.what();
+    const std::size_t tag = what.find("] ");
+    if(tag != std::string::npos)
+      what = what.substr(tag + 2);
+    throw json_error(path, "not valid JSON: " + what);
+  }
+}
+
+// The largest count (points, models, histogram entries) read: 2^40, far beyond any evaluation,
+// so that sums over a million models still fit in 64 bits.
+constexpr std::uint64_t LARGEST_COUNT = std::uint64_t(1) << 40;
+
+// A checked view of a JSON object of an evaluation file: every accessor names the file and the
+// key of a missing value, a value of the wrong type or out of range.
+class Json_object
 {
 public:
-  explicit Json_writer(std::ostream& out) : m_out(out) {}
-
-  Json_writer& begin_object(const char* key = nullptr) { return open(key, '{'); }
-  Json_writer& end_object() { return close('}'); }
-  Json_writer& begin_array(const char* key = nullptr) { return open(key, '['); }
-  Json_writer& end_array() { return close(']'); }
-
-  Json_writer& value(const char* key, const std::string& v)
+  Json_object(const Json_value& j, const std::string& file, const std::string& where = std::string())
+    : m_j(j), m_file(file), m_where(where)
   {
-    prefix(key);
-    write_string(v);
-    return *this;
+    if(!m_j.is_object())
+      fail(m_where.empty() ? std::string("the file") : m_where, "is " + type_name(m_j) + ", expected an object");
   }
-  Json_writer& value(const char* key, const char* v) { return value(key, std::string(v)); }
-  Json_writer& value(const char* key, double v)
+
+  const std::string& file() const { return m_file; }
+  bool has(const char* key) const { return m_j.contains(key); }
+
+  // Refuses keys other than `allowed`: a misspelt key is an edited file.
+  void only(std::initializer_list<const char*> allowed) const
   {
-    prefix(key);
-    if(std::isfinite(v))
+    for(auto it = m_j.begin(); it != m_j.end(); ++it)
+      if(std::find_if(allowed.begin(), allowed.end(), [&](const char* a) { return it.key() == a; }) == allowed.end())
+        fail(name(it.key()), "is not a key of this file");
+  }
+
+  Json_object object(const char* key) const { return Json_object(at(key), m_file, name(key)); }
+
+  const Json_value& array(const char* key, std::size_t largest = std::numeric_limits<std::size_t>::max()) const
+  {
+    const Json_value& v = at(key);
+    if(!v.is_array())
+      fail(name(key), "is " + type_name(v) + ", expected an array");
+    if(v.size() > largest)
+      fail(name(key), "has " + std::to_string(v.size()) + " entries, more than " + std::to_string(largest));
+    return v;
+  }
+
+  // A non-negative integer in [lowest, largest].
+  std::uint64_t integer(const char* key, std::uint64_t lowest = 0, std::uint64_t largest = LARGEST_COUNT) const
+  {
+    return integer_value(at(key), name(key), lowest, largest);
+  }
+  std::uint64_t integer_or(const char* key, std::uint64_t fallback, std::uint64_t lowest = 0,
+                           std::uint64_t largest = LARGEST_COUNT) const
+  {
+    return has(key) ? integer(key, lowest, largest) : fallback;
+  }
+
+  // A finite number, or null (the writer's non-finite numbers) read as `if_null`.
+  double number(const char* key, double if_null) const { return number_value(at(key), name(key), if_null); }
+
+  std::string string(const char* key, std::size_t longest = 4096) const
+  {
+    const Json_value& v = at(key);
+    if(!v.is_string())
+      fail(name(key), "is " + type_name(v) + ", expected a string");
+    const std::string& s = v.get_ref<const std::string&>();
+    if(s.size() > longest)
+      fail(name(key), "is a string of " + std::to_string(s.size()) + " bytes, longer than " + std::to_string(longest));
+    return s;
+  }
+
+  // One of `values`.
+  std::string choice(const char* key, std::initializer_list<const char*> values) const
+  {
+    const std::string s = string(key, 64);
+    std::string list;
+    for(const char* v : values)
     {
-      char buffer[40];
-      std::snprintf(buffer, sizeof(buffer), "%.17g", v);
-      m_out << buffer;
+      if(s == v)
+        return s;
+      list += (list.empty() ? "" : ", ") + std::string(v);
     }
-    else
-      m_out << "null";
-    return *this;
+    fail(name(key), "is '" + s + "', expected one of " + list);
+    return s;
   }
-  Json_writer& value(const char* key, std::size_t v)
+
+  bool boolean(const char* key) const
   {
-    prefix(key);
-    m_out << v;
-    return *this;
+    const Json_value& v = at(key);
+    if(!v.is_boolean())
+      fail(name(key), "is " + type_name(v) + ", expected true or false");
+    return v.get<bool>();
   }
-  Json_writer& value(const char* key, unsigned int v) { return value(key, std::size_t(v)); }
-  Json_writer& value(const char* key, bool v)
+
+  std::vector<std::uint64_t> integers(const char* key, std::size_t size, std::uint64_t largest = LARGEST_COUNT) const
   {
-    prefix(key);
-    m_out << (v ? "true" : "false");
-    return *this;
+    const Json_value& v = array(key);
+    if(v.size() != size)
+      fail(name(key), "has " + std::to_string(v.size()) + " entries, expected " + std::to_string(size));
+    std::vector<std::uint64_t> result;
+    result.reserve(v.size());
+    for(std::size_t i = 0; i < v.size(); ++i)
+      result.push_back(integer_value(v[i], name(key) + "[" + std::to_string(i) + "]", 0, largest));
+    return result;
   }
-  template <typename T>
-  Json_writer& array(const char* key, const std::vector<T>& values)
+
+  // Finite numbers (no null).
+  std::vector<double> numbers(const char* key, std::size_t largest_size) const
   {
-    begin_array(key);
-    for(const T& v : values)
-      value(nullptr, v);
-    return end_array();
+    const Json_value& v = array(key, largest_size);
+    std::vector<double> result;
+    result.reserve(v.size());
+    for(std::size_t i = 0; i < v.size(); ++i)
+    {
+      const std::string where = name(key) + "[" + std::to_string(i) + "]";
+      if(v[i].is_null())
+        fail(where, "is null, expected a number");
+      result.push_back(number_value(v[i], where, 0.));
+    }
+    return result;
   }
-  void finish() { m_out << '\n'; }
+
+  // `FILE: KEY what`.
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const
+  {
+    // a forged key can be as long as the file: the message stays one short line
+    const std::string shown = key.size() > 200 ? key.substr(0, 200) + "..." : key;
+    throw json_error(m_file, shown + " " + what);
+  }
+
+  std::string name(const std::string& key) const { return m_where.empty() ? key : m_where + "." + key; }
+
+  static std::string type_name(const Json_value& v)
+  {
+    return v.is_null() ? "null" : v.is_boolean() ? "a boolean" : v.is_number_float() ? "a number with a fraction or exponent"
+           : v.is_number() ? "an integer" : v.is_string() ? "a string" : v.is_array() ? "an array" : "an object";
+  }
 
 private:
-  Json_writer& open(const char* key, char bracket)
+  const Json_value& at(const char* key) const
   {
-    prefix(key);
-    m_out << bracket;
-    m_first.push_back(true);
-    return *this;
-  }
-  Json_writer& close(char bracket)
-  {
-    const bool empty = m_first.back();
-    m_first.pop_back();
-    if(!empty)
-      newline();
-    m_out << bracket;
-    return *this;
-  }
-  void newline()
-  {
-    m_out << '\n';
-    for(std::size_t i = 0; i < m_first.size(); ++i)
-      m_out << "  ";
-  }
-  void prefix(const char* key)
-  {
-    if(!m_first.empty())
-    {
-      if(!m_first.back())
-        m_out << ',';
-      m_first.back() = false;
-      newline();
-    }
-    if(key)
-    {
-      write_string(key);
-      m_out << ": ";
-    }
-  }
-  void write_string(const std::string& s)
-  {
-    m_out << '"';
-    for(char c : s)
-    {
-      switch(c)
-      {
-        case '"': m_out << "\\\""; break;
-        case '\\': m_out << "\\\\"; break;
-        case '\n': m_out << "\\n"; break;
-        case '\t': m_out << "\\t"; break;
-        case '\r': m_out << "\\r"; break;
-        default:
-          if(static_cast<unsigned char>(c) < 0x20)
-          {
-            char buffer[8];
-            std::snprintf(buffer, sizeof(buffer), "\\u%04x", c);
-            m_out << buffer;
-          }
-          else
-            m_out << c;
-      }
-    }
-    m_out << '"';
+    const auto it = m_j.find(key);
+    if(it == m_j.end())
+      fail(name(key), "is missing");
+    return *it;
   }
 
-  std::ostream& m_out;
-  std::vector<bool> m_first;
+  std::uint64_t integer_value(const Json_value& v, const std::string& where, std::uint64_t lowest,
+                              std::uint64_t largest) const
+  {
+    if(v.is_number_integer() && !v.is_number_unsigned())
+      fail(where, "is " + std::to_string(v.get<std::int64_t>()) + ", expected a count (an integer >= 0)");
+    if(!v.is_number_unsigned())
+      fail(where, "is " + type_name(v) + ", expected an integer");
+    const std::uint64_t x = v.get<std::uint64_t>();
+    if(x < lowest || x > largest)
+      fail(where, "is " + std::to_string(x) + ", expected " + std::to_string(lowest) + " to " + std::to_string(largest));
+    return x;
+  }
+
+  double number_value(const Json_value& v, const std::string& where, double if_null) const
+  {
+    if(v.is_null())
+      return if_null;
+    if(!v.is_number())
+      fail(where, "is " + type_name(v) + ", expected a number");
+    const double x = v.get<double>();
+    if(!std::isfinite(x))
+      fail(where, "is not a finite number");
+    return x;
+  }
+
+  const Json_value& m_j;
+  std::string m_file, m_where;
 };
-
-inline Json read_json(const std::string& path)
-{
-  Json tree;
-  boost::property_tree::read_json(path, tree);
-  return tree;
-}
-
-// A number written by Json_writer; null reads as `if_null`.
-inline double json_double(const Json& tree, const std::string& key, double if_null)
-{
-  const std::string text = tree.get<std::string>(key);
-  return text == "null" || text.empty() ? if_null : std::stod(text);
-}
-
-inline std::size_t json_size(const Json& tree, const std::string& key) { return tree.get<std::size_t>(key); }
-
-template <typename T>
-std::vector<T> json_array(const Json& tree, const std::string& key)
-{
-  std::vector<T> result;
-  for(const auto& child : tree.get_child(key))
-    result.push_back(child.second.get_value<T>());
-  return result;
-}
-
-inline std::vector<double> json_double_array(const Json& tree, const std::string& key)
-{
-  std::vector<double> result;
-  for(const auto& child : tree.get_child(key))
-    result.push_back(std::stod(child.second.get_value<std::string>()));
-  return result;
-}
 
 } // namespace sigmoid_tool
 

@@ -97,8 +97,19 @@ inline SN::Normal_options read_normal_options(const Arguments& args)
 
 inline bool read_line_angles(const Arguments& args) { return args.has("--line-angles"); }
 
+// A model with fewer distinct points than the `k_max + 1` of the search: not a failure of the
+// model or of the package, a model too small for the grid (counted and listed apart).
+struct Too_small_for_the_grid : SN::Input_error
+{
+  std::size_t needed, points;
+  Too_small_for_the_grid(const std::string& message, std::size_t needed_, std::size_t points_)
+    : SN::Input_error(message), needed(needed_), points(points_)
+  {
+  }
+};
+
 // Reads INPUT with its normals as `o` says and checks that `k_max` neighbors exist; Input_error
-// carries the reason. Without `estimate_normals`, a point set without normals comes back without
+// (Too_small_for_the_grid when there are too few points) carries the reason. Without `estimate_normals`, a point set without normals comes back without
 // normals. Estimated normals keep their neighbor rows when they have `k_max`, for the search.
 inline SN::Oriented_point_set read_model(const std::string& path, unsigned int k_max,
                                          const SN::Normal_options& o = SN::Normal_options(),
@@ -110,11 +121,13 @@ inline SN::Oriented_point_set read_model(const std::string& path, unsigned int k
   normals.kept_neighbors = k_max;
   SN::Oriented_point_set model = SN::read_oriented_point_set(path, normals);
   if(model.points.size() < std::size_t(k_max) + 1)
-    throw SN::Input_error("needs at least k_max + 1 = " + std::to_string(k_max + 1) + " distinct points, got " +
-                          std::to_string(model.points.size()) +
-                          (model.dropped_vertices == 0 ? std::string()
-                                                       : " (" + std::to_string(model.dropped_vertices) +
-                                                           " vertices dropped: no face or no defined normal)"));
+    throw Too_small_for_the_grid("needs at least k_max + 1 = " + std::to_string(k_max + 1) +
+                                   " distinct points, got " + std::to_string(model.points.size()) +
+                                   (model.dropped_vertices == 0
+                                      ? std::string()
+                                      : " (" + std::to_string(model.dropped_vertices) +
+                                          " vertices dropped: no face or no defined normal)"),
+                                 std::size_t(k_max) + 1, model.points.size());
   return model;
 }
 
@@ -155,6 +168,11 @@ inline std::string model_description(const SN::Oriented_point_set& model)
     s += "mesh vertex normals, ";
   else
     s += "normals from the file, ";
+  if(model.zero_normals > 0)
+    s += model.normals_estimated ? "the file's normals all zero, "
+                                 : std::to_string(model.zero_normals) + " zero normal" +
+                                     (model.zero_normals == 1 ? "" : "s") +
+                                     " estimated and oriented by the neighbors' normals, ";
   if(model.is_mesh)
     s += std::to_string(model.dropped_vertices) + " dropped vertices, ";
   s += std::to_string(model.merged_duplicates) + " merged duplicates)";

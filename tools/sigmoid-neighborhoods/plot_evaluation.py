@@ -3,8 +3,9 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """Figures 3-6 of the paper's Section 5 from evaluation folders (summary.json), drawn with matplotlib.
 
-Run by `sigmoid-neighborhoods report`; usable alone:
+Run by `sigmoid-neighborhoods report`, which checks the evaluation files first; usable alone:
     plot_evaluation.py --output DIR [--figure3 POINTS.csv --figure3-name NAME] EVALUATION_DIR...
+Any failure is one line on stderr and exit code 1.
 """
 import argparse
 import csv
@@ -13,11 +14,15 @@ import math
 import os
 import sys
 
-import matplotlib
+try:
+    import matplotlib
 
-matplotlib.use("Agg")  # files only, no display
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+    matplotlib.use("Agg")  # files only, no display
+    import matplotlib.pyplot as plt  # noqa: E402
+    import numpy as np  # noqa: E402
+except ImportError as e:
+    sys.stderr.write("plot_evaluation.py: needs matplotlib and numpy (%s)\n" % e)
+    sys.exit(1)
 
 LABEL_COLORS = {"linear": "#f28e2b", "planar": "#f2f2f2", "scattered": "#1f3b73", "degenerate": "#d62728"}
 ANGLE_NAMES = {0: "0", 1: "π/6", 2: "π/3", 3: "π/2", 4: "2π/3", 5: "5π/6", 6: "π"}
@@ -95,6 +100,11 @@ def figure4(summaries, out):
     plt.close(fig)
 
 
+def two_decimals(x):
+    """x to two decimals; null (no point with an optimum) as a dash."""
+    return "–" if x is None else "%.2f" % x
+
+
 def figure5(summaries, out):
     """k* histogram in percent of points, per repository."""
     fig, ax = plt.subplots(figsize=(10, 4))
@@ -104,8 +114,8 @@ def figure5(summaries, out):
         ks = np.arange(st["k_min"], st["k_max"] + 1)
         h = np.array(s["statistics"]["optimal"]["k_histogram"], dtype=float)
         ax.bar(ks + (i - (len(summaries) - 1) / 2) * width, 100 * h / max(1, h.sum()), width=width,
-               label="%s (mean %.2f, sd %.2f)" % (s["repository"], s["statistics"]["k_mean"],
-                                                 s["statistics"]["k_standard_deviation"]))
+               label="%s (mean %s, sd %s)" % (s["repository"], two_decimals(s["statistics"]["k_mean"]),
+                                             two_decimals(s["statistics"]["k_standard_deviation"])))
     ax.set_xlabel("k*")
     ax.set_ylabel("% of points")
     ax.set_title("Figure 5: optimal neighborhood size k*")
@@ -128,7 +138,7 @@ def figure6(summaries, out):
     plt.close(fig)
 
 
-def main():
+def run():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("folders", nargs="+")
     parser.add_argument("--output", required=True)
@@ -144,6 +154,14 @@ def main():
     figure4(summaries, os.path.join(args.output, "figure4_ab_histogram.png"))
     figure5(summaries, os.path.join(args.output, "figure5_k_histogram.png"))
     figure6(summaries, os.path.join(args.output, "figure6_k_deviation.png"))
+
+
+def main():
+    try:
+        run()
+    except Exception as e:  # noqa: BLE001 - one line, never a traceback
+        sys.stderr.write("plot_evaluation.py: %s: %s\n" % (type(e).__name__, str(e).splitlines()[0] if str(e) else ""))
+        sys.exit(1)
 
 
 if __name__ == "__main__":

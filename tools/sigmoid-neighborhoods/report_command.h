@@ -41,11 +41,35 @@ inline std::string percent(std::size_t part, std::size_t whole)
   return whole == 0 ? "–" : format("%.2f %%", 100. * double(part) / double(whole));
 }
 
+// `text` in a Markdown table cell: one line, no column break.
+inline std::string markdown_cell(const std::string& text)
+{
+  std::string cell;
+  for(char c : text)
+  {
+    if(c == '|')
+      cell += "\\|";
+    else if(c == '\n' || c == '\r')
+      cell += ' ';
+    else
+      cell += c;
+  }
+  return cell;
+}
+
 struct Repository_summary
 {
   std::string folder, name;
-  Json tree;
-  bool evaluated() const { return bool(tree.get_child_optional("statistics")); }
+  Json_value tree;              // summary.json, checked by read_summary()
+  Evaluation_contents contents; // its model files and failures.json: the failures' messages
+  bool evaluated() const { return tree.contains("statistics"); }
+  // the value at `path` ("statistics/optimal/mean"), NaN for null
+  double number(const std::string& path) const
+  {
+    const Json_value& v = tree.at(Json_value::json_pointer("/" + path));
+    return v.is_null() ? std::numeric_limits<double>::quiet_NaN() : v.get<double>();
+  }
+  std::size_t count(const std::string& path) const { return tree.at(Json_value::json_pointer("/" + path)).get<std::size_t>(); }
 };
 
 inline void write_report_markdown(std::ostream& out, const std::vector<Repository_summary>& repos,
@@ -71,20 +95,51 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
   std::vector<std::string> names;
   for(const auto& r : repos)
     names.push_back(r.name);
-  out << "| repository | models | failed models | points | merged duplicates | dropped vertices |\n"
-         "|---|---:|---:|---:|---:|---:|\n";
+  out << "| repository | models | too small for the grid | failed models | points | merged duplicates | "
+         "dropped vertices |\n"
+         "|---|---:|---:|---:|---:|---:|---:|\n";
   for(const auto& r : repos)
-    out << "| " << r.name << " | " << r.tree.get<std::string>("models") << " | "
-        << r.tree.get<std::string>("failed_models") << " | " << r.tree.get<std::string>("points") << " | "
-        << r.tree.get<std::string>("merged_duplicates") << " | " << r.tree.get<std::string>("dropped_vertices")
-        << " |\n";
+    out << "| " << r.name << " | " << r.count("models") << " | " << r.count("too_small_models") << " | "
+        << r.count("failed_models") << " | " << r.count("points") << " | " << r.count("merged_duplicates") << " | "
+        << r.count("dropped_vertices") << " |\n";
+  out << "\n`models`: the models evaluated. Too small for the grid: fewer distinct points than the `k_max + 1` "
+         "the search needs (listed below, not failures). Failed: a model that could not be read or evaluated, "
+         "listed below with its message.\n";
+  out << "\n| repository | models with estimated normals | points with estimated normals | models with zero normals "
+         "in the file | zero normals | estimation, orientation |\n|---|---:|---:|---:|---:|---|\n";
+  for(const auto& r : repos)
+  {
+    std::string how = "–";
+    if(r.evaluated())
+    {
+      const Json_value& s = r.tree["settings"];
+      const std::string orientation = s["orientation"].get<std::string>();
+      how = "PCA on " + std::to_string(s["normal_neighbors"].get<unsigned int>()) + " neighbors, " +
+            (orientation == "mst"         ? "a minimum spanning forest"
+             : orientation == "viewpoint" ? "towards the viewpoint"
+             : orientation == "up"        ? "upwards"
+             : orientation == "none"      ? "not oriented"
+                                          : "as recorded") +
+            "; zero normals by their neighbors' normals";
+      if(s["normals"] == "jet")
+        how.replace(0, 3, "jet fitting");
+      else if(s["normals"] == "file")
+        how = "none: `--normals file`";
+    }
+    out << "| " << r.name << " | " << r.count("models_with_estimated_normals") << " | "
+        << r.count("points_with_estimated_normals") << " | " << r.count("models_with_zero_normals") << " | "
+        << r.count("zero_normals") << " | " << how << " |\n";
+  }
+  out << "\nNormals are the mesh's vertex normals or the file's; a point set without normals, or whose normal "
+         "columns are all zero, gets estimated ones; a few zero normals among the file's are estimated and "
+         "turned to agree with their neighbors' normals.\n";
 
   out << "\n## Table 2: `E_dim` over all points\n\n";
   out << "| ";
   std::vector<std::string> columns;
   for(const auto& r : repos)
   {
-    const std::string fixed = r.evaluated() ? r.tree.get<std::string>("settings.fixed_k") : "?";
+    const std::string fixed = r.evaluated() ? std::to_string(r.count("settings/fixed_k")) : "?";
     for(const char* w : {"equal", "cut-off", "optimal"})
       columns.push_back(r.name + ": " + w);
     columns.push_back(r.name + ": equal, k = " + fixed);
@@ -100,10 +155,7 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
     std::vector<std::string> cells;
     for(const auto& r : repos)
       for(const char* w : {"equal", "cut_off", "optimal", "fixed_k"})
-        cells.push_back(r.evaluated() ? format("%.4f", json_double(r.tree, std::string("statistics.") + w + "." +
-                                                                             st.second,
-                                                                    std::numeric_limits<double>::quiet_NaN()))
-                                      : "–");
+        cells.push_back(r.evaluated() ? format("%.4f", r.number(std::string("statistics/") + w + "/" + st.second)) : "–");
     row(st.first, cells);
   }
   {
@@ -116,8 +168,8 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
           cells.push_back("–");
           continue;
         }
-        const std::size_t f = json_size(r.tree, std::string("statistics.") + w + ".failures");
-        cells.push_back(std::to_string(f) + " (" + percent(f, json_size(r.tree, "statistics.points")) + ")");
+        const std::size_t f = r.count(std::string("statistics/") + w + "/failures");
+        cells.push_back(std::to_string(f) + " (" + percent(f, r.count("statistics/points")) + ")");
       }
     row("failures", cells);
   }
@@ -138,8 +190,7 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
   {
     std::vector<std::string> cells;
     for(const auto& r : repos)
-      cells.push_back(r.evaluated() ? percent(json_size(r.tree, "statistics.table3." + t.second),
-                                              json_size(r.tree, "statistics.optimal.count"))
+      cells.push_back(r.evaluated() ? percent(r.count("statistics/table3/" + t.second), r.count("statistics/optimal/count"))
                                     : "–");
     row(t.first, cells);
   }
@@ -147,8 +198,8 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
     std::vector<std::string> mean, sd;
     for(const auto& r : repos)
     {
-      mean.push_back(r.evaluated() ? format("%.2f", json_double(r.tree, "statistics.k_mean", NAN)) : "–");
-      sd.push_back(r.evaluated() ? format("%.2f", json_double(r.tree, "statistics.k_standard_deviation", NAN)) : "–");
+      mean.push_back(r.evaluated() ? format("%.2f", r.number("statistics/k_mean")) : "–");
+      sd.push_back(r.evaluated() ? format("%.2f", r.number("statistics/k_standard_deviation")) : "–");
     }
     row("mean k*", mean);
     row("sd k*", sd);
@@ -161,6 +212,28 @@ inline void write_report_markdown(std::ostream& out, const std::vector<Repositor
          "| scanned (Choi et al.) | 25,929,256 | 0.335 | 0.253 | 0.157 | 54.30 % | 43.50 % | 42.29 % | 12.09 (4.62) |\n"
          "| scanned (FAUST) | 17,918,016 | 0.250 | 0.211 | 0.096 | 62.44 % | 36.86 % | 42.11 % | 14.23 (4.49) |\n"
          "| scanned (Pan et Oursons) | 1,199,992 | 0.383 | 0.320 | 0.134 | 60.70 % | 37.33 % | 42.21 % | 13.54 (4.40) |\n";
+
+  bool any_small = false, any_failed = false;
+  for(const auto& r : repos)
+  {
+    any_small = any_small || !r.contents.small.empty();
+    any_failed = any_failed || !r.contents.failures.empty();
+  }
+  if(any_small)
+  {
+    out << "\n## Models too small for the grid\n\n| repository | model | distinct points | needed (`k_max + 1`) |\n"
+           "|---|---|---:|---:|\n";
+    for(const auto& r : repos)
+      for(const auto& m : r.contents.small)
+        out << "| " << r.name << " | " << markdown_cell(m.model) << " | " << m.points << " | " << m.needed << " |\n";
+  }
+  if(any_failed)
+  {
+    out << "\n## Failed models\n\n| repository | model | message |\n|---|---|---|\n";
+    for(const auto& r : repos)
+      for(const auto& f : r.contents.failures)
+        out << "| " << r.name << " | " << markdown_cell(f.model) << " | " << markdown_cell(f.message) << " |\n";
+  }
 
   out << "\n## Figures\n\n";
   if(figure3)
@@ -193,8 +266,9 @@ inline int run_report(int argc, char** argv)
       throw Usage_error(folder + " has no summary.json: run evaluate first");
     Repository_summary r;
     r.folder = folder;
-    r.tree = read_json(summary.string());
-    r.name = r.tree.get<std::string>("repository");
+    r.tree = read_summary(folder, r.contents); // with its model files: the plot script reads only checked files
+    r.contents.models.clear();
+    r.name = r.tree["repository"].get<std::string>();
     repos.push_back(r);
   }
   create_output_folder(outdir);
@@ -205,11 +279,10 @@ inline int run_report(int argc, char** argv)
   {
     const std::string model_path = args.get("--figure-model");
     Search_options options = read_search_options(args);
-    const Json& settings_tree = repos.front().tree;
     Evaluation_settings settings;
     settings.a_grid = settings.b_grid = SN::default_angle_grid();
-    if(repos.front().evaluated())
-      settings = read_settings(settings_tree); // its grids too: the figure is of the evaluation's search
+    if(repos.front().evaluated()) // its grids too: the figure is of the evaluation's search
+      settings = read_settings(Json_object(repos.front().tree, (fs::path(repos.front().folder) / "summary.json").string()));
     settings.cut_off_angle = std::acos(EVALUATION_CUT_OFF_COSINE);
     options.k_min = settings.k_min;
     options.k_max = settings.k_max;

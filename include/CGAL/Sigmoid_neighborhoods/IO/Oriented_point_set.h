@@ -49,6 +49,10 @@ struct Oriented_point_set
   unsigned int estimation_neighbors = 0;  ///< the `k` of the estimation and orientation, when estimated
   Normal_orientation orientation = Normal_orientation::NONE; ///< of estimated normals
   std::size_t orientation_components = 0; ///< the trees of `Normal_orientation::SPANNING_FOREST`
+  /// points whose normal in the file is zero, with `Normal_source::AUTO`: all of them when every normal
+  /// is zero (a file without normals: `normals_estimated`), else those estimated and oriented to agree
+  /// with their neighbors' normals (SPEC §1)
+  std::size_t zero_normals = 0;
   std::size_t input_vertices = 0;       ///< vertices or points in the file
   std::size_t merged_duplicates = 0;    ///< merged into an earlier point at the same position
   std::size_t dropped_vertices = 0;     ///< mesh vertices without a face or with an undefined normal

@@ -12,6 +12,7 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/check_points.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/estimate_normals.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/estimate_zero_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/input_file.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/merge_equal_positions.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/mesh_to_points.h>
@@ -46,7 +47,11 @@ namespace Sigmoid_neighborhoods {
   `options.neighbors` nearest points and oriented by `orient_normals_by_spanning_forest()` (every
   connected component from its highest point) or towards a viewpoint, both steps on one
   k-nearest-neighbor structure. With `Normal_source::AUTO`, a file without normals gets estimated ones,
-  or none when `options.neighbors` is 0 (`normals` then comes back empty).
+  or none when `options.neighbors` is 0 (`normals` then comes back empty). Zero normals in a point
+  set's file, with `Normal_source::AUTO`: all of them zero is a file without normals; a few are each
+  estimated (PCA on `options.neighbors` neighbors) and turned to agree with their neighbors' normals;
+  both counted in `Oriented_point_set::zero_normals`. With `Normal_source::PCA` or `JET` the file's
+  normals, zero or not, are replaced; with `Normal_source::FROM_FILE` a zero normal is an error.
 
   \param filename the file; its extension (any case) selects the format: `.off`, `.obj`, `.ply`,
   `.stl`, `.xyz`, `.pwn` or `.las` (`.laz` is refused)
@@ -55,8 +60,9 @@ namespace Sigmoid_neighborhoods {
 
   \throws Input_error with a one-line message on anything unusable: a missing, unreadable or empty
   file, an unknown extension, a syntax error, a count beyond the file, LAZ, non-finite coordinates,
-  zero or non-finite normals, no points, no normals with `Normal_source::FROM_FILE`, points on which
-  no normal can be estimated (too few, on a line, coincident).
+  non-finite normals, zero normals with `Normal_source::FROM_FILE` (or with `Normal_source::AUTO` and
+  `options.neighbors` 0, unless all are zero), no points, no normals with `Normal_source::FROM_FILE`,
+  points on which no normal can be estimated (too few, on a line, coincident).
   \throws std::invalid_argument on options no file can satisfy: `options.neighbors` below what the
   method needs (2 for PCA, 5 for jet fitting; 0 is allowed with `Normal_source::AUTO` only).
 */
@@ -99,7 +105,18 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename, c
   out.input_vertices = out.points.size();
   if(out.points.empty())
     throw Input_error("no points in the file");
-  internal::check_points_and_normals(out.points, out.normals, has_normals);
+  // zero normals: replaced anyway (PCA, JET), estimated (AUTO), refused (FROM_FILE)
+  std::size_t first_zero = 0;
+  const std::size_t zeros = internal::check_points_and_normals(
+    out.points, out.normals, has_normals, options.source != Normal_source::FROM_FILE, &first_zero);
+  const bool all_zero = zeros > 0 && zeros == out.normals.size();
+  if(all_zero)
+  {
+    has_normals = false; // normal columns of zeros: no normals
+    out.normals.clear();
+  }
+  else if(zeros > 0 && may_skip_estimation)
+    throw Input_error("point " + std::to_string(first_zero) + " has a zero normal");
   internal::merge_duplicate_points(out, has_normals);
   if(!has_normals && options.source == Normal_source::FROM_FILE)
     throw Input_error("the file has no normals");
@@ -109,7 +126,13 @@ inline Oriented_point_set read_oriented_point_set(const std::string& filename, c
     return out;
   }
   if(!has_normals || estimate_anyway)
+  {
     internal::estimate_normals(out, options);
+    if(all_zero && options.source == Normal_source::AUTO)
+      out.zero_normals = out.points.size();
+  }
+  else if(zeros > 0)
+    internal::estimate_zero_normals(out, options);
   return out;
 }
 

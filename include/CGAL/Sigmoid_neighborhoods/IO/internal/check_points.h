@@ -28,10 +28,13 @@ inline void check_coordinates(const Oriented_point_set::Point_3& p, const char* 
 }
 
 // Every point finite and within LARGEST_COORDINATE; with normals, every normal finite and non-zero,
-// made unit length (unit_normal()).
-inline void check_points_and_normals(std::vector<Oriented_point_set::Point_3>& points,
-                                     std::vector<Oriented_point_set::Vector_3>& normals, bool has_normals)
+// made unit length (unit_normal()). With `allow_zero_normals`, a zero normal is left zero and
+// counted instead (the index of the first in `first_zero`): the caller estimates it or refuses it.
+inline std::size_t check_points_and_normals(std::vector<Oriented_point_set::Point_3>& points,
+                                            std::vector<Oriented_point_set::Vector_3>& normals, bool has_normals,
+                                            bool allow_zero_normals = false, std::size_t* first_zero = nullptr)
 {
+  std::size_t zeros = 0;
   for(std::size_t i = 0; i < points.size(); ++i)
   {
     check_coordinates(points[i], "point", i);
@@ -39,10 +42,18 @@ inline void check_points_and_normals(std::vector<Oriented_point_set::Point_3>& p
       continue;
     Eigen::Vector3d unit;
     if(!unit_normal(normals[i], unit))
-      throw Input_error("point " + std::to_string(i) + " has a " +
-                        (std::isfinite(normals[i].squared_length()) ? "zero" : "non-finite") + " normal");
+    {
+      const bool zero = std::isfinite(normals[i].squared_length());
+      if(!zero || !allow_zero_normals)
+        throw Input_error("point " + std::to_string(i) + " has a " + (zero ? "zero" : "non-finite") + " normal");
+      if(zeros++ == 0 && first_zero != nullptr)
+        *first_zero = i;
+      normals[i] = CGAL::NULL_VECTOR;
+      continue;
+    }
     normals[i] = Oriented_point_set::Vector_3(unit.x(), unit.y(), unit.z());
   }
+  return zeros;
 }
 
 } // namespace internal
