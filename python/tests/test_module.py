@@ -335,6 +335,20 @@ def test_read_a_labeled_las_tile():
     assert 770500 <= model["points"][:, 0].min() and model["points"][:, 0].max() <= 770541.69
 
 
+def test_read_estimates_zero_normals_from_their_neighbors(fandisk, tmp_path):
+    points, normals = fandisk
+    xyz = tmp_path / "zero.xyz"
+    with_zeros = normals.copy()
+    with_zeros[[5, 50, 500]] = 0.0
+    np.savetxt(xyz, np.hstack([points, with_zeros]), fmt="%.17g")
+    model = sn.read(xyz)
+    assert model["zero_normals"] == 3 and not model["normals_estimated"]
+    assert np.allclose(np.linalg.norm(model["normals"], axis=1), 1.0)
+    assert np.all(np.sum(model["normals"][[5, 50, 500]] * normals[[5, 50, 500]], axis=1) > 0)  # the file's side
+    with pytest.raises(OSError, match="point 5 has a zero normal"):
+        sn.read(xyz, normals="file")
+
+
 def test_read_errors_are_os_errors_with_the_readers_message(tmp_path):
     with pytest.raises(OSError, match="cannot open"):
         sn.read(tmp_path / "missing.ply")
