@@ -28,7 +28,8 @@ core = Pybind11Extension(
     include_dirs=[str(REPOSITORY / "include"), "/usr/include/eigen3"],
     define_macros=[("NDEBUG", None), ("CGAL_EIGEN3_ENABLED", None), ("SIGMOID_NEIGHBORHOODS_VERSION", f'"{VERSION}"')],
     # the flags of the CMake build (Release): the same code as the C++ library's tests check
-    extra_compile_args=["-O3", "-g0", "-fopenmp"],
+    # -frounding-math: CGAL's interval arithmetic (the exact predicates of the readers) needs it, as CGAL's CMake sets
+    extra_compile_args=["-O3", "-g0", "-fopenmp", "-frounding-math"],
     extra_link_args=["-fopenmp"],
     libraries=["gmp", "mpfr"],
     cxx_std=17,
