@@ -176,18 +176,14 @@ py::dict optimal(const py::object& points_object, const py::object& normals_obje
     throw std::invalid_argument("points and normals differ in length: " + std::to_string(points.size()) + " and " +
                                 std::to_string(normals.size()));
   const SN::Neighborhood_criterion minimised = SN::criterion_from_name(criterion);
+  const auto maps = SNP::number_of_threads(
+    threads_of(threads),
+    CGAL::parameters::point_map(Point_rows_map{&points}).normal_map(Vector_rows_map{&normals}));
+  const auto weights = SNP::line_angles(line_angles, SNP::angle_tolerance(angle_tolerance, maps));
+  const auto grid = SNP::a_grid(a_grid ? *a_grid : SN::default_angle_grid(),
+                                SNP::b_grid(b_grid ? *b_grid : SN::default_angle_grid(), weights));
   const auto np = SNP::k_min(
-    k_min,
-    SNP::k_max(k_max,
-               SNP::a_grid(a_grid ? *a_grid : SN::default_angle_grid(),
-                           SNP::b_grid(b_grid ? *b_grid : SN::default_angle_grid(),
-                                       SNP::barycenter(barycenter_from_name(barycenter),
-                                                       SNP::criterion(minimised,
-                                                                      SNP::angle_tolerance(angle_tolerance,
-                                                                                           SNP::line_angles(line_angles,
-                                                                                                            SNP::number_of_threads(threads_of(threads),
-                                                                                                                                   CGAL::parameters::point_map(Point_rows_map{&points})
-                                                                                                                                     .normal_map(Vector_rows_map{&normals}))))))))));
+    k_min, SNP::k_max(k_max, SNP::barycenter(barycenter_from_name(barycenter), SNP::criterion(minimised, grid))));
   const std::optional<Neighbor_rows> rows = neighbor_rows(neighbors, points, k_max);
   const std::size_t n = points.size();
   Columns columns({py::ssize_t(n)});
