@@ -116,6 +116,7 @@ public:
   }
 
   const std::vector<std::string>& positional() const { return m_positional; }
+  const std::map<std::string, std::string>& options() const { return m_options; }
   bool has(const std::string& name) const { return m_options.count(name) != 0; }
   std::string get(const std::string& name, const std::string& fallback = std::string()) const
   {

@@ -11,6 +11,7 @@
 #include "denoise_command.h"
 #include "denoising_commands.h"
 #include "classify_command.h"
+#include "catalog_command.h"
 
 #include <exception>
 #include <iostream>
@@ -36,6 +37,7 @@ const char* USAGE =
   "  denoise   Yadav et al. 2018's three-stage denoising of a point set or a mesh's vertices\n"
   "  denoise-comparison  the denoiser against CGAL's jet and bilateral smoothing on noisy CAD models\n"
   "  classify  semantic classification (CGAL's random forest on CGAL's and the package's features)\n"
+  "  catalog   the tiles of a survey: list them, merge the outputs of 'optimal --catalog --tile'\n"
   "run 'sigmoid-neighborhoods COMMAND --help' for the options of a command\n"
   "exit codes: 0 done, 1 internal error, 2 bad usage or unusable input, 3 out of memory\n";
 
@@ -64,7 +66,7 @@ int main(int argc, char** argv)
       {"optimal", run_optimal}, {"evaluate", run_evaluate}, {"merge", run_merge}, {"report", run_report},
       {"filter-normals", run_filter_normals}, {"denoise-experiment", run_denoise_experiment},
       {"denoise", run_denoise}, {"denoise-comparison", run_denoise_comparison_command},
-      {"classify", run_classify}};
+      {"classify", run_classify}, {"catalog", run_catalog}};
     for(const auto& c : commands)
       if(command == c.first)
         return c.second(argc, argv);

@@ -6,6 +6,7 @@
 #ifndef SIGMOID_NEIGHBORHOODS_TOOL_OPTIMAL_COMMAND_H
 #define SIGMOID_NEIGHBORHOODS_TOOL_OPTIMAL_COMMAND_H
 
+#include "catalog_input.h"
 #include "command_line.h"
 #include "model_input.h"
 #include "ply_output.h"
@@ -28,8 +29,9 @@ namespace sigmoid_tool {
 namespace SN = CGAL::Sigmoid_neighborhoods;
 
 inline const char* OPTIMAL_USAGE =
-  "usage: sigmoid-neighborhoods optimal INPUT -o OUT.csv [--ply OUT.ply] [--color error|label|none]\n"
-  "         [--k-min 6] [--k-max 20] [--a-grid ANGLES] [--b-grid ANGLES] [--barycenter weighted|unweighted]\n"
+  "usage: sigmoid-neighborhoods optimal INPUT|--catalog SOURCE [--tile NAME] -o OUT.csv [--ply OUT.ply]\n"
+  "         [--color error|label|none]"
+  " [--k-min 6] [--k-max 20] [--a-grid ANGLES] [--b-grid ANGLES] [--barycenter weighted|unweighted]\n"
   "         [--angle-tolerance 1e-6] [--criterion dimensionality|eigenentropy] [--threads N] [normals]\n"
   "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply; normals estimated when absent)\n"
   "  --ply: a binary PLY point cloud: the CSV's columns as properties scalar_<column> (CloudCompare's\n"
@@ -156,11 +158,13 @@ inline void write_optimal_row(std::ostream& out, const SN::Oriented_point_set::P
     out << r.k_equal;
 }
 
+// The rows of the points `first` ... `last - 1` (a tile without its halo), all by default.
 inline void write_optimal_csv(std::ostream& out, const SN::Oriented_point_set& model,
-                              const std::vector<SN::Optimal_sigmoid_neighborhood>& records)
+                              const std::vector<SN::Optimal_sigmoid_neighborhood>& records, std::size_t first = 0,
+                              std::size_t last = std::size_t(-1))
 {
   out << OPTIMAL_CSV_HEADER << '\n';
-  for(std::size_t i = 0; i < records.size(); ++i)
+  for(std::size_t i = first; i < (std::min)(last, records.size()); ++i)
   {
     write_optimal_row(out, model.points[i], model.normals[i], records[i]);
     out << '\n';
@@ -172,10 +176,12 @@ inline void write_optimal_csv(std::ostream& out, const SN::Oriented_point_set& m
 // 3 degenerate; a failure has NaN a, b and features, k = 0 and error = inf), then `quality` and the
 // colors of `colors` for the viewers without scalar fields.
 inline void write_optimal_ply(std::ostream& out, const SN::Oriented_point_set& model,
-                              const std::vector<SN::Optimal_sigmoid_neighborhood>& records, Ply_colors colors)
+                              const std::vector<SN::Optimal_sigmoid_neighborhood>& records, Ply_colors colors,
+                              std::size_t first = 0, std::size_t last = std::size_t(-1))
 {
+  last = (std::min)(last, records.size());
   Ply_point_set ps(true);
-  ps.reserve(records.size());
+  ps.reserve(last - first);
   auto a = add_ply_scalar<double>(ps, "a"), b = add_ply_scalar<double>(ps, "b");
   auto k = add_ply_scalar<std::int32_t>(ps, "k");
   auto error = add_ply_scalar<double>(ps, "error"), linearity = add_ply_scalar<double>(ps, "linearity"),
@@ -185,7 +191,7 @@ inline void write_optimal_ply(std::ostream& out, const SN::Oriented_point_set& m
   auto k_equal = add_ply_scalar<std::int32_t>(ps, "k_equal");
   Ply_viewer_properties viewer(ps, colors);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for(std::size_t i = 0; i < records.size(); ++i)
+  for(std::size_t i = first; i < last; ++i)
   {
     const auto& r = records[i];
     auto it = ps.insert(model.points[i], model.normals[i]);
@@ -207,18 +213,18 @@ inline void write_optimal_ply(std::ostream& out, const SN::Oriented_point_set& m
 inline int run_optimal(int argc, char** argv)
 {
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT,
-                       with_normal_options({"-o", "--output", "--ply", "--color", "--k-min", "--k-max", "--a-grid",
-                                            "--b-grid", "--barycenter", "--angle-tolerance", "--criterion",
-                                            "--threads"}),
+                       with_catalog_options(with_normal_options(
+                         {"-o", "--output", "--ply", "--color", "--k-min", "--k-max", "--a-grid", "--b-grid",
+                          "--barycenter", "--angle-tolerance", "--criterion", "--threads"})),
                        with_normal_flags({"-h", "--help"}), NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, OPTIMAL_USAGE))
   {
-    std::cout << GRID_USAGE << COLOR_USAGE << NORMAL_USAGE;
+    std::cout << GRID_USAGE << COLOR_USAGE << NORMAL_USAGE << CATALOG_USAGE;
     return EXIT_OK;
   }
-  const auto input_and_output = one_input_and_output(args, "optimal", "OUT.csv");
-  const std::string& input = input_and_output.first;
-  const std::string& csv = input_and_output.second;
+  const std::string csv = args.output();
+  if(csv.empty())
+    throw Usage_error("optimal needs -o OUT.csv");
   const std::string ply = args.get("--ply");
   Search_options options = read_search_options(args);
   try
@@ -234,20 +240,23 @@ inline int run_optimal(int argc, char** argv)
 
   CGAL::Real_timer timer;
   timer.start();
-  const SN::Oriented_point_set model =
-    read_input(input, [&] { return read_model(input, options.k_max, normal_options); });
+  const Input_points in = read_input_points(args, "optimal", options.k_max, normal_options);
+  const SN::Oriented_point_set& model = in.model;
   const auto records = optimal_search(model, options);
   std::size_t failures = 0;
-  for(const auto& r : records)
-    failures += r.is_failure();
+  for(std::size_t i = in.first; i < in.last; ++i)
+    failures += records[i].is_failure();
 
-  write_file_atomically(csv, [&](std::ofstream& out) { write_optimal_csv(out, model, records); });
+  write_file_atomically(csv, [&](std::ofstream& out) { write_optimal_csv(out, model, records, in.first, in.last); });
   if(!ply.empty())
-    write_file_atomically(ply, [&](std::ofstream& out) { write_optimal_ply(out, model, records, colors); }, true);
+    write_file_atomically(
+      ply, [&](std::ofstream& out) { write_optimal_ply(out, model, records, colors, in.first, in.last); }, true);
   timer.stop();
+  write_tile_description(csv, "optimal", args, in, timer.time());
   char seconds[32];
   std::snprintf(seconds, sizeof(seconds), "%.2f", timer.time());
-  std::cerr << input << ": " << model_description(model) << (options.line_angles ? ", line angles" : "")
+  std::cerr << in.source << ": " << model_description(model) << halo_description(in)
+            << (options.line_angles ? ", line angles" : "")
             << (options.criterion != SN::Neighborhood_criterion::DIMENSIONALITY
                   ? std::string(", criterion ") + SN::criterion_name(options.criterion) : std::string())
             << ", "

@@ -29,8 +29,8 @@ void keep_first_of_merged(std::vector<T>& values, const Merged_positions& merged
 }
 
 // A point set read with or without normals: duplicates merged into the first, with its normal and
-// its per-point values (labels, LAS fields).
-inline void merge_duplicate_points(Oriented_point_set& out, bool has_normals)
+// its per-point values (labels, LAS fields); returns which points were kept.
+inline Merged_positions merge_duplicate_points(Oriented_point_set& out, bool has_normals)
 {
   const Merged_positions merged = merge_equal_positions(out.points);
   keep_first_of_merged(out.points, merged);
@@ -42,6 +42,7 @@ inline void merge_duplicate_points(Oriented_point_set& out, bool has_normals)
   keep_first_of_merged(out.numbers_of_returns, merged);
   keep_first_of_merged(out.gps_times, merged);
   out.merged_duplicates = merged.merged;
+  return merged;
 }
 
 } // namespace internal

@@ -203,10 +203,30 @@ inline Las_header read_las_header(const std::string& filename)
   return read_las_header(in, las_file_size(filename));
 }
 
+inline void reserve_las_points(Oriented_point_set& out, std::size_t n, bool gps_times)
+{
+  out.points.reserve(out.points.size() + n);
+  out.labels.reserve(out.labels.size() + n);
+  out.intensities.reserve(out.intensities.size() + n);
+  out.return_numbers.reserve(out.return_numbers.size() + n);
+  out.numbers_of_returns.reserve(out.numbers_of_returns.size() + n);
+  if(gps_times)
+    out.gps_times.reserve(out.gps_times.size() + n);
+}
+
+// Every record of a LAS file.
+struct Keep_every_las_point
+{
+  bool operator()(std::size_t, const double*) const { return true; }
+};
+
 // The points of a LAS file with their classification (`labels`), intensity, return number, number of
 // returns and, in the formats that have it, GPS time, appended to `out`; the file's records in its
-// order, read a chunk at a time. A `.laz` file, or a compressed one, is refused with how to decompress it.
-inline void read_las(const Input_file& file, Oriented_point_set& out)
+// order, read a chunk at a time, those for which `keep(record, xyz)` is true (a tile's halo reads a
+// neighbor tile without holding it whole). A `.laz` file, or a compressed one, is refused with how
+// to decompress it.
+template <typename Keep = Keep_every_las_point>
+void read_las(const Input_file& file, Oriented_point_set& out, Keep keep = Keep())
 {
   if(file.extension == "laz")
     throw Input_error(laz_refusal());
@@ -216,15 +236,11 @@ inline void read_las(const Input_file& file, Oriented_point_set& out)
   const Las_header h =
     read_las_header(in, file.size == Byte_budget::UNKNOWN_SIZE ? las_file_size(file.name) : file.size);
 
-  // At most one point per record of the file (read_las_header() checked it): sized to the file.
+  // At most one point per record of the file (read_las_header() checked it): sized to the file,
+  // unless a filter keeps a part of it.
   const std::size_t n = std::size_t(h.point_count);
-  out.points.reserve(out.points.size() + n);
-  out.labels.reserve(out.labels.size() + n);
-  out.intensities.reserve(out.intensities.size() + n);
-  out.return_numbers.reserve(out.return_numbers.size() + n);
-  out.numbers_of_returns.reserve(out.numbers_of_returns.size() + n);
-  if(h.has_gps_time())
-    out.gps_times.reserve(out.gps_times.size() + n);
+  if(std::is_same<Keep, Keep_every_las_point>::value)
+    reserve_las_points(out, n, h.has_gps_time());
 
   in.seekg(std::streamoff(h.offset_to_point_data));
   const std::size_t chunk_points = (std::max)(std::size_t(1), LAS_CHUNK_BYTES / h.record_length);
@@ -247,6 +263,8 @@ inline void read_las(const Input_file& file, Oriented_point_set& out)
           throw Input_error(las_error("point " + std::to_string(first + i) +
                                       " has a non-finite coordinate after scale and offset"));
       }
+      if(!keep(first + i, xyz))
+        continue;
       out.points.emplace_back(xyz[0], xyz[1], xyz[2]);
       out.intensities.push_back(las_number<std::uint16_t>(r + 12));
       const unsigned int returns = r[14];

@@ -1,0 +1,265 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_READ_TILE_WITH_HALO_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_IO_READ_TILE_WITH_HALO_H
+
+#include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/Normal_options.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/Tile_catalog.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/catalog_points.h>
+
+#include <CGAL/Bbox_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  one tile of a `Tile_catalog` with its halo, as `read_tile_with_halo()` reads it.
+*/
+struct Tile_with_halo
+{
+  /// the tile's points and its halo's, distinct, in the catalog's global order, with their normals
+  /// and the neighbor rows of the search (`Oriented_point_set::neighbor_indices`)
+  Oriented_point_set points;
+  std::size_t first = 0; ///< the tile's own points are `points.points[first]` ... `[last - 1]`
+  std::size_t last = 0;  ///< see `first`
+  double halo_width = 0.;         ///< how far beyond the tile's extent the halo reaches, in `x` and `y`
+  unsigned int readings = 0;      ///< the halos read until one held every neighborhood
+  std::size_t seam_duplicates = 0; ///< the tile's points merged into an earlier tile's point at their position
+  /// the records of the tile's points are those of the union, bit for bit: every orientation but
+  /// `Normal_orientation::SPANNING_FOREST`, whose forest crosses the tiles' seams
+  bool exact = true;
+
+  /// the number of the tile's own points
+  std::size_t size() const { return last - first; }
+};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+constexpr unsigned int MAXIMUM_HALO_READINGS = 64;
+
+// What no halo has read: the catalog's tiles that reach beyond `region`. For a point in `region`,
+// margin() bounds from below its distance to every point of the catalog outside `region`.
+class Unread_space
+{
+public:
+  Unread_space(const Tile_catalog& catalog, const CGAL::Bbox_2& region) : m_region(region)
+  {
+    for(const Catalog_tile& t : catalog.tiles)
+      if(t.points > 0 && !(t.extent.xmin() >= region.xmin() && t.extent.xmax() <= region.xmax() &&
+                           t.extent.ymin() >= region.ymin() && t.extent.ymax() <= region.ymax()))
+        m_beyond.push_back(t.extent);
+  }
+
+  bool empty() const { return m_beyond.empty(); }
+
+  // A point outside `region` in the tile of extent B lies beyond one of the region's sides that B
+  // crosses, and within B: its distance to p is at least the larger of the two bounds.
+  double margin(double x, double y) const
+  {
+    double margin = std::numeric_limits<double>::infinity();
+    for(const CGAL::Bbox_2& b : m_beyond)
+    {
+      double side = std::numeric_limits<double>::infinity();
+      if(b.xmin() < m_region.xmin())
+        side = (std::min)(side, x - m_region.xmin());
+      if(b.xmax() > m_region.xmax())
+        side = (std::min)(side, m_region.xmax() - x);
+      if(b.ymin() < m_region.ymin())
+        side = (std::min)(side, y - m_region.ymin());
+      if(b.ymax() > m_region.ymax())
+        side = (std::min)(side, m_region.ymax() - y);
+      const double dx = (std::max)({b.xmin() - x, 0., x - b.xmax()});
+      const double dy = (std::max)({b.ymin() - y, 0., y - b.ymax()});
+      margin = (std::min)(margin, (std::max)(side, std::sqrt(dx * dx + dy * dy)));
+    }
+    return margin;
+  }
+
+private:
+  CGAL::Bbox_2 m_region;
+  std::vector<CGAL::Bbox_2> m_beyond;
+};
+
+inline CGAL::Bbox_2 widened(const CGAL::Bbox_2& b, double width)
+{
+  return CGAL::Bbox_2(b.xmin() - width, b.ymin() - width, b.xmax() + width, b.ymax() + width);
+}
+
+// How far the `k` nearest neighbors of a tile's point reach if its points spread evenly over its
+// extent: the first halo, before the neighborhoods say how far they reach.
+inline double first_halo_width(const Catalog_tile& tile, unsigned int k)
+{
+  const double area = (tile.extent.xmax() - tile.extent.xmin()) * (tile.extent.ymax() - tile.extent.ymin());
+  if(!(area > 0.) || tile.points == 0)
+    return 1.;
+  return std::sqrt(double(k) * area / (3.14159265358979323846 * double(tile.points)));
+}
+
+// How much farther than `margin` the point at (x, y) needs to see to see its neighbor at
+// `distance` (at most 0 when it sees it), with a slack against the rounding of both.
+inline double shortfall(double distance, double margin, double x, double y)
+{
+  const double slack = 1e-9 * (distance + std::abs(x) + std::abs(y));
+  return distance + slack - margin;
+}
+
+// The most a point of `needed` lacks to see its `k`-th neighbor among the read points (0: every one
+// sees it, so its row is the union's); infinity when a row is short while some points are unread.
+inline double largest_shortfall(const Oriented_point_set& s, const std::vector<std::size_t>& needed, unsigned int k,
+                                const Unread_space& unread)
+{
+  double largest = 0.;
+  for(std::size_t i : needed)
+  {
+    const std::size_t row = s.neighbor_offsets[i + 1] - s.neighbor_offsets[i];
+    if(row < k)
+      return std::numeric_limits<double>::infinity();
+    const auto& p = s.points[i];
+    const auto& q = s.points[s.neighbor_indices[s.neighbor_offsets[i] + k - 1]];
+    const double distance = std::sqrt(CGAL::squared_distance(p, q));
+    largest = (std::max)(largest, shortfall(distance, unread.margin(p.x(), p.y()), p.x(), p.y()));
+  }
+  return largest;
+}
+
+} // namespace internal
+/// \endcond
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  \brief reads all the tiles of `catalog` as one point set, in the catalog's global order (see
+  `Tile_catalog`): the union that `read_tile_with_halo()` reproduces one tile at a time.
+
+  Normals as `read_oriented_point_set()` gives them: the files' (every tile with normals, or none),
+  or estimated and oriented on the union. `options.kept_neighbors` rows are kept for the steps after.
+
+  \throws Input_error on an unusable tile (prefixed with its file), tiles whose per-point fields
+  differ, a point outside its tile's extent, fewer points than the estimation needs.
+*/
+inline Oriented_point_set read_catalog_union(const Tile_catalog& catalog, const Normal_options& options)
+{
+  internal::Catalog_points read = internal::read_catalog_points(catalog, nullptr);
+  internal::finish_catalog_points(read, options);
+  return std::move(read.set);
+}
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  \brief reads tile `tile` of `catalog` with a halo of points of the other tiles that holds the `k`
+  nearest neighbors of every point of the tile, and what their normals need, in the union: the
+  records of the tile's points computed on the result equal, bit for bit, those of the same points
+  computed on `read_catalog_union()`.
+
+  The halo is every point of the catalog within `halo_width` of the tile's extent in `x` and `y`.
+  It starts at `initial_width` (0: from the tile's density, where `k` neighbors of evenly spread
+  points would reach) and grows until it provably holds:
+  - the `k` nearest neighbors, in the union, of every point of the tile: the `k`-th one found is
+    nearer than any point outside the halo can be (the tiles' extents bound where those are);
+  - when normals are estimated, the `options.neighbors` nearest neighbors of those points too, so that
+    their normals are the union's.
+  Only the tiles whose extents meet the halo are read, a LAS file a chunk at a time, so memory holds
+  the tile and its halo, not the catalog. The points are in the catalog's global order; duplicates
+  are merged into the first (a point of the tile at the position of an earlier tile's point is that
+  point, counted in `Tile_with_halo::seam_duplicates`, and not one of the tile's own).
+
+  Orientation: `Normal_orientation::UPWARD`, `VIEWPOINT` and `NONE` orient each normal alone, so the
+  result is exact. `SPANNING_FOREST` grows its forest over the tile and its halo, every component
+  from its highest point, as in one file; a component that crosses a seam may be oriented otherwise in
+  the union: `Tile_with_halo::exact` is then false.
+
+  \param catalog the tiles
+  \param tile the position of the tile in `catalog.tiles`
+  \param k the neighbors of the computation after (`k_max` of the optimal search); the result keeps
+  the rows of `max(k, options.neighbors, options.kept_neighbors)` nearest neighbors
+  \param options the normals, as for `read_catalog_union()`
+  \param initial_width the first halo (0: from the density)
+
+  \throws Input_error as `read_catalog_union()` does, and when no halo within 64 readings holds the
+  neighborhoods
+  \throws std::invalid_argument when `tile` is not a position in `catalog.tiles` or `k` is 0
+*/
+inline Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size_t tile, unsigned int k,
+                                          const Normal_options& options, double initial_width = 0.)
+{
+  if(tile >= catalog.tiles.size())
+    throw std::invalid_argument("read_tile_with_halo: tile " + std::to_string(tile) + " of a catalog of " +
+                                std::to_string(catalog.tiles.size()));
+  if(k == 0)
+    throw std::invalid_argument("read_tile_with_halo: k must be at least 1");
+  const Catalog_tile& own = catalog.tiles[tile];
+  Normal_options o = options;
+  o.kept_neighbors = (std::max)(k, o.kept_neighbors);
+
+  Tile_with_halo result;
+  result.exact = true;
+  double width = initial_width > 0. ? initial_width
+                                    : 1.5 * (internal::first_halo_width(own, k) +
+                                             internal::first_halo_width(own, o.neighbors));
+  for(result.readings = 1;; ++result.readings)
+  {
+    const CGAL::Bbox_2 region = internal::widened(own.extent, width);
+    internal::Catalog_points read = internal::read_catalog_points(catalog, &region);
+    internal::finish_catalog_points(read, o);
+    const auto own_range = read.range_of(tile);
+    const Oriented_point_set& s = read.set;
+    const internal::Unread_space unread(catalog, region);
+
+    // the rows the records read: the tile's points' (k), and those of their normals (the estimation's)
+    double largest = 0.;
+    if(!unread.empty() && own_range.first < own_range.second)
+    {
+      std::vector<std::size_t> needed;
+      for(std::size_t i = own_range.first; i < own_range.second; ++i)
+        needed.push_back(i);
+      largest = internal::largest_shortfall(s, needed, k, unread);
+      if(s.normals_estimated && largest <= 0.)
+      {
+        std::vector<char> is_needed(s.points.size(), 0);
+        for(std::size_t i = own_range.first; i < own_range.second; ++i)
+        {
+          is_needed[i] = 1;
+          for(std::size_t r = s.neighbor_offsets[i]; r < s.neighbor_offsets[i] + k; ++r)
+            is_needed[s.neighbor_indices[r]] = 1;
+        }
+        needed.clear();
+        for(std::size_t i = 0; i < s.points.size(); ++i)
+          if(is_needed[i])
+            needed.push_back(i);
+        largest = internal::largest_shortfall(s, needed, o.neighbors, unread);
+      }
+    }
+    if(largest <= 0.)
+    {
+      result.points = std::move(read.set);
+      result.first = own_range.first;
+      result.last = own_range.second;
+      result.seam_duplicates = read.merged_into_earlier_tiles(tile);
+      result.halo_width = width;
+      result.exact = o.orientation != Normal_orientation::SPANNING_FOREST || !result.points.normals_estimated;
+      return result;
+    }
+    if(result.readings == internal::MAXIMUM_HALO_READINGS)
+      throw Input_error(own.path + ": no halo up to " + std::to_string(width) + " holds the neighborhoods of the tile");
+    width += std::isfinite(largest) ? (std::max)(1.25 * largest, 0.25 * width) : width;
+  }
+}
+
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_READ_TILE_WITH_HALO_H
