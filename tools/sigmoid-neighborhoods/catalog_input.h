@@ -88,9 +88,9 @@ inline SN::Tile_catalog read_catalog_argument(const std::string& source)
 }
 
 // The points of the command: INPUT, or --catalog with or without --tile; `k` is the neighbors of the
-// computation (the halo holds them).
+// computation (the halo holds them), `minimum_halo` what else it needs around the tile.
 inline Input_points read_input_points(const Arguments& args, const std::string& command, unsigned int k,
-                                      const SN::Normal_options& normals)
+                                      const SN::Normal_options& normals, double minimum_halo = 0.)
 {
   Input_points in;
   if(!args.has("--catalog"))
@@ -139,7 +139,10 @@ inline Input_points read_input_points(const Arguments& args, const std::string& 
   }
   in.source = catalog.tiles[tile].path;
   in.is_tile = true;
-  in.halo = read_input(source, [&] { return SN::read_tile_with_halo(catalog, tile, k, o, halo); });
+  SN::Halo_options halo_options;
+  halo_options.initial_width = halo;
+  halo_options.minimum_width = minimum_halo;
+  in.halo = read_input(source, [&] { return SN::read_tile_with_halo(catalog, tile, k, o, halo_options); });
   in.model = std::move(in.halo.points);
   in.first = in.halo.first;
   in.last = in.halo.last;

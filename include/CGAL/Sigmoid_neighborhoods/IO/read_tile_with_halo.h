@@ -47,6 +47,20 @@ struct Tile_with_halo
   std::size_t size() const { return last - first; }
 };
 
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  how wide `read_tile_with_halo()` starts its halo.
+*/
+struct Halo_options
+{
+  /// the first halo (0: where the `k` neighbors of evenly spread points would reach, from the tile's
+  /// density); it grows until it holds every neighborhood
+  double initial_width = 0.;
+  /// the halo is never narrower: what a computation needs beyond neighborhoods, e.g. the side of the
+  /// cells of `compute_height_features()`, whose cells then lie in the tile and its halo
+  double minimum_width = 0.;
+};
+
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
@@ -166,8 +180,8 @@ inline Oriented_point_set read_catalog_union(const Tile_catalog& catalog, const 
   computed on `read_catalog_union()`.
 
   The halo is every point of the catalog within `halo_width` of the tile's extent in `x` and `y`.
-  It starts at `initial_width` (0: from the tile's density, where `k` neighbors of evenly spread
-  points would reach) and grows until it provably holds:
+  It starts at `halo.initial_width` (0: from the tile's density, where `k` neighbors of evenly spread
+  points would reach), at least `halo.minimum_width`, and grows until it provably holds:
   - the `k` nearest neighbors, in the union, of every point of the tile: the `k`-th one found is
     nearer than any point outside the halo can be (the tiles' extents bound where those are);
   - when normals are estimated, the `options.neighbors` nearest neighbors of those points too, so that
@@ -187,14 +201,15 @@ inline Oriented_point_set read_catalog_union(const Tile_catalog& catalog, const 
   \param k the neighbors of the computation after (`k_max` of the optimal search); the result keeps
   the rows of `max(k, options.neighbors, options.kept_neighbors)` nearest neighbors
   \param options the normals, as for `read_catalog_union()`
-  \param initial_width the first halo (0: from the density)
+  \param halo the first and the narrowest halo
 
   \throws Input_error as `read_catalog_union()` does, and when no halo within 64 readings holds the
   neighborhoods
-  \throws std::invalid_argument when `tile` is not a position in `catalog.tiles` or `k` is 0
+  \throws std::invalid_argument when `tile` is not a position in `catalog.tiles`, `k` is 0 or a
+  width of `halo` is negative or not finite
 */
 inline Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size_t tile, unsigned int k,
-                                          const Normal_options& options, double initial_width = 0.)
+                                          const Normal_options& options, const Halo_options& halo = Halo_options())
 {
   if(tile >= catalog.tiles.size())
     throw std::invalid_argument("read_tile_with_halo: tile " + std::to_string(tile) + " of a catalog of " +
@@ -207,9 +222,13 @@ inline Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size
 
   Tile_with_halo result;
   result.exact = true;
-  double width = initial_width > 0. ? initial_width
-                                    : 1.5 * (internal::first_halo_width(own, k) +
-                                             internal::first_halo_width(own, o.neighbors));
+  if(!(halo.initial_width >= 0. && halo.minimum_width >= 0. && std::isfinite(halo.initial_width) &&
+       std::isfinite(halo.minimum_width)))
+    throw std::invalid_argument("read_tile_with_halo: halo widths must be finite and at least 0");
+  double width = halo.initial_width > 0. ? halo.initial_width
+                                         : 1.5 * (internal::first_halo_width(own, k) +
+                                                  internal::first_halo_width(own, o.neighbors));
+  width = (std::max)(width, halo.minimum_width);
   for(result.readings = 1;; ++result.readings)
   {
     const CGAL::Bbox_2 region = internal::widened(own.extent, width);
