@@ -33,7 +33,8 @@ inline const char* CATALOG_USAGE =
   "      every neighborhood, so that its rows are those of the union, bit for bit (orientation mst\n"
   "      excepted); writes OUT's rows and, next to it, OUT without extension + .tile.json for\n"
   "      'catalog merge'; without --tile, the union in one run; --halo WIDTH: the first halo (default:\n"
-  "      from the tile's density; it grows until it holds every neighborhood)\n";
+  "      from the tile's density; it grows until it holds every neighborhood); estimated normals are\n"
+  "      oriented upwards (--orientation up) unless --orientation or --viewpoint says otherwise\n";
 
 inline std::vector<std::string> with_catalog_options(std::vector<std::string> valued)
 {
@@ -112,6 +113,9 @@ inline Input_points read_input_points(const Arguments& args, const std::string& 
   in.catalog_tiles = catalog.tiles.size();
   SN::Normal_options o = normals;
   o.kept_neighbors = k;
+  // surveys cut into tiles are airborne: upwards, which is exact per tile, unless asked otherwise
+  if(!args.has("--orientation") && !args.has("--viewpoint"))
+    o.orientation = SN::Normal_orientation::UPWARD;
   if(!args.has("--tile"))
   {
     if(args.has("--halo"))
