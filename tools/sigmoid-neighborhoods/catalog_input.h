@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -59,6 +60,7 @@ struct Input_points
 {
   SN::Oriented_point_set model;
   std::size_t first = 0, last = 0;
+  std::size_t halo_points = 0;       // the points read around the tile (the model may move on)
   std::string source;                // what was read, for the messages
   bool is_tile = false;
   SN::Tile_with_halo halo;           // when is_tile: everything but its points
@@ -89,23 +91,25 @@ inline SN::Tile_catalog read_catalog_argument(const std::string& source)
 }
 
 // The points of the command: INPUT, or --catalog with or without --tile; `k` is the neighbors of the
-// computation (the halo holds them), `minimum_halo` what else it needs around the tile.
+// computation (the halo holds them), `minimum_halo` what else it needs around the tile, `leading`
+// the positional arguments before INPUT (classify predict's MODEL).
 inline Input_points read_input_points(const Arguments& args, const std::string& command, unsigned int k,
-                                      const SN::Normal_options& normals, double minimum_halo = 0.)
+                                      const SN::Normal_options& normals, double minimum_halo = 0.,
+                                      std::size_t leading = 0)
 {
   Input_points in;
   if(!args.has("--catalog"))
   {
     if(args.has("--tile") || args.has("--halo"))
       throw Usage_error("--tile and --halo go with --catalog");
-    if(args.positional().size() != 1)
+    if(args.positional().size() != leading + 1)
       throw Usage_error(command + " needs exactly one INPUT, or --catalog SOURCE");
-    in.source = args.positional()[0];
+    in.source = args.positional()[leading];
     in.model = read_input(in.source, [&] { return read_model(in.source, k, normals); });
     in.last = in.model.points.size();
     return in;
   }
-  if(!args.positional().empty())
+  if(args.positional().size() != leading)
     throw Usage_error(command + " takes --catalog SOURCE or INPUT, not both");
   const std::string source = args.get("--catalog");
   const SN::Tile_catalog catalog = read_catalog_argument(source);
@@ -146,10 +150,14 @@ inline Input_points read_input_points(const Arguments& args, const std::string& 
   SN::Halo_options halo_options;
   halo_options.initial_width = halo;
   halo_options.minimum_width = minimum_halo;
-  in.halo = read_input(source, [&] { return SN::read_tile_with_halo(catalog, tile, k, o, halo_options); });
+  // k = 0 (no neighborhood, e.g. heights alone): the halo still starts from the nearest neighbor
+  in.halo = read_input(source, [&] {
+    return SN::read_tile_with_halo(catalog, tile, (std::max)(k, 1u), o, halo_options);
+  });
   in.model = std::move(in.halo.points);
   in.first = in.halo.first;
   in.last = in.halo.last;
+  in.halo_points = in.model.points.size() - (in.last - in.first);
   if(in.model.points.size() < std::size_t(k) + 1)
     throw Usage_error(source + ": needs at least " + std::to_string(k + 1) + " distinct points, got " +
                       std::to_string(in.model.points.size()));
@@ -165,7 +173,7 @@ inline std::string halo_description(const Input_points& in)
   std::snprintf(width, sizeof(width), "%.3g", in.halo.halo_width);
   return ", tile " + in.tile_name + ": " + std::to_string(in.last - in.first) + " points, halo " + width + " (" +
          std::to_string(in.halo.readings) + (in.halo.readings == 1 ? " reading, " : " readings, ") +
-         std::to_string(in.model.points.size() - (in.last - in.first)) + " points)" +
+         std::to_string(in.halo_points) + " points)" +
          (in.halo.seam_duplicates == 0 ? std::string()
                                        : ", " + std::to_string(in.halo.seam_duplicates) + " seam duplicates") +
          (in.halo.exact ? std::string() : ", orientation mst: not exact across seams");
@@ -191,19 +199,22 @@ inline std::string settings_text(const Arguments& args)
 }
 
 // What `catalog merge` checks of a tile's output: which tile, of which catalog, computed how, rows.
+// `more_settings`: what else decides the rows, e.g. a model read from a file.
 inline void write_tile_description(const std::string& output, const std::string& command, const Arguments& args,
-                                   const Input_points& in, double seconds)
+                                   const Input_points& in, double seconds,
+                                   const std::string& more_settings = std::string())
 {
   if(!in.is_tile)
     return;
   nlohmann::ordered_json d;
   d["tile"] = in.tile_name;
   d["command"] = command;
-  d["settings"] = settings_text(args);
+  const std::string settings = settings_text(args);
+  d["settings"] = more_settings.empty() ? settings : settings + (settings.empty() ? "" : " ") + more_settings;
   d["catalog_tiles"] = in.catalog_tiles;
   d["catalog_fingerprint"] = in.catalog_fingerprint;
   d["rows"] = in.last - in.first;
-  d["halo_points"] = in.model.points.size() - (in.last - in.first);
+  d["halo_points"] = in.halo_points;
   d["halo_width"] = in.halo.halo_width;
   d["readings"] = in.halo.readings;
   d["seam_duplicates"] = in.halo.seam_duplicates;

@@ -12,6 +12,7 @@
 #include "classification/confusion.h"
 #include "classification/feature_groups.h"
 #include "classification/label_mapping.h"
+#include "catalog_input.h"
 #include "command_line.h"
 #include "model_input.h"
 #include "ply_output.h"
@@ -30,6 +31,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <iostream>
 #include <map>
@@ -46,7 +48,8 @@ namespace {
 const char* const CLASSIFY_USAGE =
   "usage: sigmoid-neighborhoods classify train FILE... -o MODEL [--labels MAP] [--features GROUPS]\n"
   "                                [--trees 25] [--depth 20] [--feature-order-seed N] [normals] [--threads N]\n"
-  "       sigmoid-neighborhoods classify predict MODEL INPUT -o OUT.ply [--graphcut STRENGTH] [--threads N]\n"
+  "       sigmoid-neighborhoods classify predict MODEL INPUT|--catalog SOURCE [--tile NAME] -o OUT.ply\n"
+  "                                [--graphcut STRENGTH] [--threads N]\n"
   "       sigmoid-neighborhoods classify evaluate MODEL FILE... -o DIR [--graphcut STRENGTH] [--threads N]\n"
   "       sigmoid-neighborhoods classify experiment --train FILE,... --test FILE,... -o DIR [--sets SETS]\n"
   "                                [--orders 10] [--cv-orders 1] [--graphcut 0.2] [--labels MAP] [--trees 25]\n"
@@ -58,6 +61,13 @@ const char* const CLASSIFY_USAGE =
   "  --graphcut STRENGTH: CGAL's graph-cut regularisation of the labels on 12 neighbors (e.g. 0.2)\n"
   "  normals are estimated (pca on 18 neighbors) and oriented upwards unless --orientation says otherwise\n"
   "  predict writes a binary PLY: scalar_label (class index), scalar_confidence_<class>, red green blue\n"
+  "  predict --catalog SOURCE: the union of the tiles in one run; with --tile NAME, the tile's points alone,\n"
+  "      featured with a halo of the other tiles' points that holds the k nearest neighbors of the model's\n"
+  "      groups, the neighbors of their normals and, for the group height, every cell of the tile: their labels\n"
+  "      and confidences are those of the union, bit for bit (orientation mst excepted); refused with --tile:\n"
+  "      the group cgal (CGAL's generator takes its scales from the average spacing and anchors its grids at\n"
+  "      the bounding box of the whole point set) and --graphcut (a minimisation over the whole point set):\n"
+  "      predict the union for those\n"
   "  evaluate writes DIR/evaluation.md, .csv, .json: confusion matrix, precision, recall, F1, IoU per\n"
   "      class, overall accuracy, mean F1, mean IoU\n"
   "  experiment trains and tests every feature set of --sets (NAME=GROUP,GROUP;NAME=...; default: the sets\n"
@@ -107,6 +117,26 @@ SN::Normal_options classify_normal_options(const Arguments& args)
   return o;
 }
 
+// The truth and, when `compute_features`, the feature columns of `f.model`.
+void add_features(Featured_file& f, const Label_mapping& labels, bool need_labels, const Feature_options& features,
+                  bool compute_features = true)
+{
+  const std::string& path = f.path;
+  if(need_labels && f.model.labels.empty())
+    throw Usage_error(path + ": the file has no labels (LAS classification, PLY label/class/classification)");
+  f.truth.assign(f.model.points.size(), -1);
+  for(std::size_t i = 0; i < f.model.labels.size(); ++i)
+    f.truth[i] = labels.class_of(f.model.labels[i]);
+  if(!compute_features)
+    return;
+  CGAL::Real_timer timer;
+  timer.start();
+  f.columns = read_input(path, [&] {
+    return compute_feature_columns(f.model, features, [&](const std::string& step) { progress(path + ": " + step); });
+  });
+  f.seconds_features = timer.time();
+}
+
 Featured_file read_and_feature(const std::string& path, const Label_mapping& labels, bool need_labels,
                                const SN::Normal_options& normals, const Feature_options& features,
                                bool compute_features = true)
@@ -116,19 +146,7 @@ Featured_file read_and_feature(const std::string& path, const Label_mapping& lab
   progress(path + ": reading");
   // the normals' neighbor rows kept for the features: one neighbor structure per file
   f.model = read_input(path, [&] { return read_model(path, largest_neighborhood(features), normals); });
-  if(need_labels && f.model.labels.empty())
-    throw Usage_error(path + ": the file has no labels (LAS classification, PLY label/class/classification)");
-  f.truth.assign(f.model.points.size(), -1);
-  for(std::size_t i = 0; i < f.model.labels.size(); ++i)
-    f.truth[i] = labels.class_of(f.model.labels[i]);
-  if(!compute_features)
-    return f;
-  CGAL::Real_timer timer;
-  timer.start();
-  f.columns = read_input(path, [&] {
-    return compute_feature_columns(f.model, features, [&](const std::string& step) { progress(path + ": " + step); });
-  });
-  f.seconds_features = timer.time();
+  add_features(f, labels, need_labels, features, compute_features);
   return f;
 }
 
@@ -269,13 +287,15 @@ Rgb class_color(std::size_t c, const std::string& name)
   return palette[c % 8];
 }
 
+// The points `first` ... `last - 1` of `file` (a tile without its halo), all by default.
 void write_prediction_ply(const std::string& path, const Featured_file& file, const Prediction& p,
-                          const Label_mapping& m)
+                          const Label_mapping& m, std::size_t first = 0, std::size_t last = std::size_t(-1))
 {
+  last = std::min(last, file.model.points.size());
   Ply_point_set ps(false);
-  ps.reserve(file.model.points.size());
-  for(const auto& point : file.model.points)
-    ps.insert(point);
+  ps.reserve(last - first);
+  for(std::size_t i = first; i < last; ++i)
+    ps.insert(file.model.points[i]);
   auto label = add_ply_scalar<int>(ps, "label");
   std::vector<Ply_point_set::Property_map<float>> confidence;
   for(const std::string& name : m.names)
@@ -287,7 +307,7 @@ void write_prediction_ply(const std::string& path, const Featured_file& file, co
   auto red = ps.add_property_map<std::uint8_t>("red", 0).first;
   auto green = ps.add_property_map<std::uint8_t>("green", 0).first;
   auto blue = ps.add_property_map<std::uint8_t>("blue", 0).first;
-  std::size_t i = 0;
+  std::size_t i = first;
   for(auto it = ps.begin(); it != ps.end(); ++it, ++i)
   {
     const int c = p.classes[i];
@@ -438,32 +458,68 @@ double read_graphcut(const Arguments& args)
   return strength;
 }
 
+// What a tile's features or labels cannot share with the union: a refusal naming it, before any reading.
+void refuse_inexact_tile(const Classifier_settings& settings, double graphcut)
+{
+  const std::string groups = whole_set_groups(settings.features);
+  if(!groups.empty())
+    throw Usage_error("classify predict --tile: the model's feature group " + groups +
+                      " depends on the whole point set (CGAL's generator: scales from the average spacing, grids "
+                      "anchored at the bounding box), so a tile would not get the union's features; predict the "
+                      "union (--catalog without --tile) or use a model without it");
+  if(graphcut > 0.)
+    throw Usage_error("classify predict --tile: --graphcut minimises over the whole point set, so a tile would not "
+                      "get the union's labels; predict the union (--catalog without --tile) or leave --graphcut out");
+}
+
+// Which model a tile was predicted with, for the tile description: its settings and its trees.
+std::string model_fingerprint(const Classifier_settings& settings, const std::string& forest_bytes)
+{
+  return "model:" + std::to_string(std::hash<std::string>()(settings_json(settings).dump() + forest_bytes));
+}
+
 int run_predict(int argc, char** argv)
 {
-  const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT + 1, {"-o", "--output", "--graphcut", "--threads"},
-                       {"-h", "--help"});
+  const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT + 1,
+                       with_catalog_options({"-o", "--output", "--graphcut", "--threads"}), {"-h", "--help"});
   if(print_help(args, CLASSIFY_USAGE))
+  {
+    std::cout << CATALOG_USAGE;
     return EXIT_OK;
-  if(args.positional().size() != 2)
-    throw Usage_error("classify predict needs MODEL INPUT");
+  }
+  if(args.positional().empty())
+    throw Usage_error("classify predict needs MODEL INPUT, or MODEL --catalog SOURCE");
   const std::string output = args.output();
   if(output.empty())
     throw Usage_error("classify predict needs -o OUT.ply");
   const std::string& model_path = args.positional()[0];
   std::string forest_bytes;
   Classifier_settings settings = read_classifier_settings(model_path, forest_bytes);
+  const std::string model = model_fingerprint(settings, forest_bytes);
   settings.features.threads = settings.normals.threads = read_threads(args);
   const double graphcut = read_graphcut(args);
-  const Featured_file file =
-    read_and_feature(args.positional()[1], settings.labels, false, settings.normals, settings.features);
+  if(args.has("--tile"))
+    refuse_inexact_tile(settings, graphcut);
+  CGAL::Real_timer timer;
+  timer.start();
+  progress("reading");
+  // the normals' neighbor rows kept for the features; a tile's halo holds them and the height cells
+  Input_points in = read_input_points(args, "classify predict", largest_neighborhood(settings.features),
+                                      settings.normals, cell_halo(settings.features), 1);
+  Featured_file file;
+  file.path = in.source;
+  file.model = std::move(in.model);
+  add_features(file, settings.labels, false, settings.features);
   const Prediction p = predict(file, settings, forest_bytes, nullptr, graphcut);
-  write_prediction_ply(output, file, p, settings.labels);
+  write_prediction_ply(output, file, p, settings.labels, in.first, in.last);
+  timer.stop();
+  write_tile_description(output, "classify predict", args, in, timer.time(), model);
   end_progress();
   std::vector<std::size_t> counts(settings.labels.names.size(), 0);
-  for(int c : p.classes)
-    if(c >= 0)
-      ++counts[std::size_t(c)];
-  std::cerr << output << ": " << p.classes.size() << " points:";
+  for(std::size_t i = in.first; i < in.last; ++i)
+    if(p.classes[i] >= 0)
+      ++counts[std::size_t(p.classes[i])];
+  std::cerr << output << ": " << in.last - in.first << " points" << halo_description(in) << ":";
   for(std::size_t c = 0; c < counts.size(); ++c)
     std::cerr << (c ? ", " : " ") << settings.labels.names[c] << ' ' << counts[c];
   std::cerr << "; features " << number_fixed(file.seconds_features, 1) << " s, classification "

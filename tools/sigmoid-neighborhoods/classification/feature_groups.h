@@ -142,6 +142,24 @@ inline unsigned int largest_neighborhood(const Feature_options& o)
   return k;
 }
 
+// The halo the group height needs around a tile (0: none): a cell meeting the tile lies within its
+// side of the tile, so a halo that wide holds every point of the tile's cells. The relative margin
+// covers the rounding of x / side at the cells' borders while |x| / side stays below 10^9.
+inline double cell_halo(const Feature_options& o)
+{
+  if(!internal_classification::has_group(o, "height"))
+    return 0.;
+  return *std::max_element(o.cell_sizes.begin(), o.cell_sizes.end()) * (1. + 1e-6);
+}
+
+// The groups of `o` that depend on the whole point set (the cgal group: CGAL's generator takes its
+// scales from the average spacing and anchors its grids at the bounding box), so that a tile with
+// any halo gets other values than the union: "" when there is none.
+inline std::string whole_set_groups(const Feature_options& o)
+{
+  return internal_classification::has_group(o, "cgal") ? "cgal" : "";
+}
+
 // The columns of every group of `o` on `model` (positions and oriented normals), in the order of
 // `o.groups`. The package's groups share one k-nearest-neighbor structure: the model's own rows when
 // its normal estimation kept enough of them (read_model() with largest_neighborhood(o)), else one
