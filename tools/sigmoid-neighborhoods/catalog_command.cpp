@@ -6,6 +6,7 @@
 #include "catalog_input.h"
 #include "command_line.h"
 #include "json.h"
+#include "retile_command.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -22,13 +23,23 @@ namespace {
 const char* const CATALOG_COMMAND_USAGE =
   "usage: sigmoid-neighborhoods catalog list SOURCE [--names]\n"
   "       sigmoid-neighborhoods catalog merge SOURCE DIR... -o OUT.csv\n"
+  "       sigmoid-neighborhoods catalog retile INPUT.las --size S -o DIR [--origin X Y] [--buffer 64]\n"
+  "         [--open-files 64]\n"
   "  SOURCE: a folder of tiles (.las .ply .xyz .pwn, in name order) or a text file listing them\n"
   "  list: one line per tile, in the catalog's order: name,points,xmin,ymin,xmax,ymax,path\n"
   "      (--names: the names alone, for GNU parallel or a Slurm array)\n"
   "  merge: the CSV outputs NAME.csv of 'optimal --catalog SOURCE --tile NAME', found in the\n"
   "      folders DIR, checked (every tile of SOURCE exactly once, computed on this catalog with the\n"
   "      same settings, its rows all there) and concatenated in the catalog's order: the CSV of the\n"
-  "      union in one run\n";
+  "      union in one run\n"
+  "  retile: INPUT.las (uncompressed) cut into the square cells [ox + i S, ox + (i+1) S) x [oy + j S,\n"
+  "      oy + (j+1) S) (origin 0 0 by default), streamed in bounded memory; DIR (created; holding no\n"
+  "      tiles) receives one DIR/STEM_I_J.las per cell holding points: the input's header, VLRs and\n"
+  "      EVLRs (copied), its records byte for byte in the input's order, counts and bounds updated.\n"
+  "      I and J are zero-padded so that name order is (i, j) order; an axis with a negative index\n"
+  "      is written plus 10^w (w: the digits of its largest index), which the summary line says;\n"
+  "      --buffer: MiB of records waiting to be written, all tiles together; --open-files: tile files\n"
+  "      open at once (the others are reopened to append)\n";
 
 int run_list(int argc, char** argv)
 {
@@ -203,12 +214,14 @@ int run_catalog(int argc, char** argv)
     return run_list(argc, argv);
   if(sub == "merge")
     return run_merge_tiles(argc, argv);
+  if(sub == "retile")
+    return run_retile(argc, argv, CATALOG_COMMAND_USAGE);
   if(sub == "-h" || sub == "--help")
   {
     std::cout << CATALOG_COMMAND_USAGE;
     return EXIT_OK;
   }
-  throw Usage_error("catalog needs list or merge\n" + std::string(CATALOG_COMMAND_USAGE));
+  throw Usage_error("catalog needs list, merge or retile\n" + std::string(CATALOG_COMMAND_USAGE));
 }
 
 } // namespace sigmoid_tool

@@ -37,7 +37,7 @@ const char* USAGE =
   "  denoise   Yadav et al. 2018's three-stage denoising of a point set or a mesh's vertices\n"
   "  denoise-comparison  the denoiser against CGAL's jet and bilateral smoothing on noisy CAD models\n"
   "  classify  semantic classification (CGAL's random forest on CGAL's and the package's features)\n"
-  "  catalog   the tiles of a survey: list them, merge the outputs of 'optimal --catalog --tile'\n"
+  "  catalog   tiles of a survey: list, merge the outputs of 'optimal --catalog --tile', cut a LAS file\n"
   "run 'sigmoid-neighborhoods COMMAND --help' for the options of a command\n"
   "exit codes: 0 done, 1 internal error, 2 bad usage or unusable input, 3 out of memory\n";
 

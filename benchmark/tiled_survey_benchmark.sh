@@ -1,0 +1,160 @@
+#!/bin/bash
+# Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+#
+# The tiled pipeline at survey scale: a synthetic airborne survey (generate_survey, written once),
+# every tile computed with its halo by 'optimal --catalog SURVEY --tile NAME', J jobs of T threads
+# at a time under GNU parallel, each job's wall time and peak resident size recorded; then one tile
+# computed alone in memory, for the cost of the halo. Resumable: a tile whose NAME.tile.json (written
+# last) is in the output folder is not computed again.
+#
+# usage: benchmark/tiled_survey_benchmark.sh [--points N] [--tile-size S] [--jobs J] [--threads T]
+#          [--a-grid ANGLES] [--b-grid ANGLES] [--halo WIDTH] [--seed SEED] [--work DIR] [--discard-csv]
+#   --points: about N points (default 2e6); --tile-size: S metres (default 180): the survey has m x m
+#       tiles, m the nearest to sqrt(N / 15) / S (see generate_survey --help)
+#   --jobs, --threads: J jobs at once (default 2), T threads each (default 1)
+#   --a-grid, --b-grid, --halo: passed to optimal (--halo to the tiles' jobs alone: a first halo wide
+#       enough saves its growth, one reading of the neighbors instead of several)
+#   --work: the folder of the survey and the outputs (default survey-benchmark); the survey is
+#       WORK/survey_N_S_SEED, generated when absent; the outputs WORK/optimal_N_S_SEED_TAG
+#   --discard-csv: removes each tile's CSV once its job is done (its .tile.json, .log and .time kept):
+#       for surveys whose CSVs would not fit on the disk (about 255 bytes per point)
+# The table: wall time of this run and per point; the jobs' wall and CPU (user + system) time per
+# point, which other load on the machine does not inflate; the largest peak resident size of a job;
+# and the same for the middle tile of the catalog computed alone, in memory.
+# Environment: SIGMOID_NEIGHBORHOODS and GENERATE_SURVEY, the programs (default: the build folder
+# next to this script).
+set -euo pipefail
+
+here=$(cd "$(dirname "$0")" && pwd)
+tool=${SIGMOID_NEIGHBORHOODS:-$here/../build/tools/sigmoid-neighborhoods/sigmoid-neighborhoods}
+generator=${GENERATE_SURVEY:-$here/../build/benchmark/generate_survey}
+points=2e6 tile_size=180 jobs=2 threads=1 seed=1 work=survey-benchmark discard_csv=0
+grid=() halo=()
+usage() { sed -n '/^# usage:/,/^# next to this script/p' "$0" | sed 's/^# \{0,1\}//'; exit "$1"; }
+while [ $# -gt 0 ]; do
+  case $1 in
+    --points) points=$2; shift 2 ;;
+    --tile-size) tile_size=$2; shift 2 ;;
+    --jobs) jobs=$2; shift 2 ;;
+    --threads) threads=$2; shift 2 ;;
+    --seed) seed=$2; shift 2 ;;
+    --work) work=$2; shift 2 ;;
+    --a-grid|--b-grid) grid+=("$1" "$2"); shift 2 ;;
+    --halo) halo=("$1" "$2"); shift 2 ;;
+    --discard-csv) discard_csv=1; shift ;;
+    -h|--help) usage 0 ;;
+    *) echo "tiled_survey_benchmark.sh: unknown argument $1" >&2; usage 2 ;;
+  esac
+done
+for program in "$tool" "$generator"; do
+  [ -x "$program" ] || { echo "tiled_survey_benchmark.sh: $program not found (build the project)" >&2; exit 2; }
+done
+command -v parallel > /dev/null || { echo "tiled_survey_benchmark.sh: needs GNU parallel" >&2; exit 2; }
+
+# The survey, written once: generated aside, then renamed, so that a folder there is complete.
+mkdir -p "$work"
+survey=$work/survey_${points}_${tile_size}_${seed}
+if [ ! -d "$survey" ]; then
+  rm -rf "$survey.partial"
+  "$generator" "$points" "$survey.partial" --tile-size "$tile_size" --seed "$seed"
+  mv "$survey.partial" "$survey"
+fi
+"$tool" catalog list "$survey" > "$work/catalog.csv"
+tiles=$(wc -l < "$work/catalog.csv")
+survey_points=$(awk -F, '{ s += $2 } END { print s }' "$work/catalog.csv")
+survey_bytes=$(du -sb "$survey" | cut -f1)
+
+# Outputs per setting: the grids change the rows, the threads and the first halo only the times.
+tag=$(printf '%s ' "${grid[@]+"${grid[@]}"}" "${halo[@]+"${halo[@]}"}" | cksum | cut -d' ' -f1)
+out=$work/optimal_${points}_${tile_size}_${seed}_T${threads}_$tag
+mkdir -p "$out"
+
+# Runs a command with its stderr in LOG; its wall time and peak resident size in REPORT:
+# /usr/bin/time -v's report or, where there is none, the same two lines, VmHWM read from /proc.
+measure() {
+  local report=$1 log=$2
+  shift 2
+  if [ -x /usr/bin/time ]; then
+    /usr/bin/time -v -o "$report" "$@" 2> "$log"
+    return
+  fi
+  local start peak=0 hwm status=0
+  start=$(date +%s.%N)
+  "$@" 2> "$log" &
+  local pid=$!
+  while kill -0 "$pid" 2> /dev/null; do
+    hwm=$(awk '/^VmHWM/ { print $2 }' "/proc/$pid/status" 2> /dev/null || true)
+    [ -n "$hwm" ] && peak=$hwm
+    sleep 0.2
+  done
+  wait "$pid" || status=$?
+  awk -v a="$(date +%s.%N)" -v b="$start" -v m="$peak" 'BEGIN {
+    printf "\tElapsed (wall clock) time (h:mm:ss or m:ss): 0:%.2f\n\tMaximum resident set size (kbytes): %d\n", a - b, m }' \
+    > "$report"
+  return "$status"
+}
+# One job: the tile's rows, NAME.time, NAME.log.
+run_tile() {
+  local name=$1
+  [ -e "$out/$name.tile.json" ] && return 0 # done by an earlier run
+  measure "$out/$name.time" "$out/$name.log" "$tool" optimal --catalog "$survey" --tile "$name" -o "$out/$name.csv" \
+    --orientation up --threads "$threads" "${grid[@]+"${grid[@]}"}" "${halo[@]+"${halo[@]}"}"
+  [ "$discard_csv" -eq 0 ] || rm -f "$out/$name.csv"
+}
+# The wall seconds, CPU seconds (0: unknown) and peak resident kB of a report.
+read_time() {
+  awk -F': ' '/Elapsed \(wall clock\)/ { n = split($2, t, ":"); s = 0; for(i = 1; i <= n; ++i) s = s * 60 + t[i] }
+              /(User|System) time \(seconds\)/ { c += $2 }
+              /Maximum resident set size/ { m = $2 } END { printf "%.2f %.2f %d\n", s, c, m }' "$1"
+}
+seconds_since() { awk -v a="$(date +%s.%N)" -v b="$1" 'BEGIN { printf "%.2f", a - b }'; }
+export -f measure run_tile
+export tool survey out threads discard_csv
+export grid_text="${grid[*]+"${grid[*]}"}" halo_text="${halo[*]+"${halo[*]}"}"
+
+done_before=$(cut -d, -f1 "$work/catalog.csv" | while read -r name; do [ ! -e "$out/$name.tile.json" ] || echo; done | wc -l)
+echo "survey: $survey_points points in $tiles tiles ($survey_bytes bytes), $done_before tiles already done; $jobs jobs of $threads threads" >&2
+start=$(date +%s.%N)
+# GNU parallel runs the function in a new bash: the options travel as text (they have no spaces).
+"$tool" catalog list "$survey" --names |
+  parallel -j "$jobs" --halt now,fail=1 --joblog "$out/joblog.txt" 'grid=($grid_text) halo=($halo_text); run_tile {}' ||
+  { echo "tiled_survey_benchmark.sh: a tile failed: see $out/joblog.txt and its NAME.log" >&2; exit 1; }
+wall=$(seconds_since "$start")
+
+# The table: every tile's report, this run's wall.
+job_seconds=0 cpu_seconds=0 peak_kb=0 peak_tile=
+add() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", a + b }'; }
+while IFS=, read -r name _; do
+  read -r seconds cpu kb < <(read_time "$out/$name.time")
+  job_seconds=$(add "$job_seconds" "$seconds")
+  cpu_seconds=$(add "$cpu_seconds" "$cpu")
+  if [ "$kb" -gt "$peak_kb" ]; then peak_kb=$kb; peak_tile=$name; fi
+done < "$work/catalog.csv"
+csv_bytes=$(find "$out" -name '*.csv' -printf '%s\n' | awk '{ s += $1 } END { print s + 0 }')
+
+# One tile alone, in memory: the middle one of the catalog.
+middle=$(sed -n "$(( (tiles + 1) / 2 ))p" "$work/catalog.csv")
+middle_name=$(echo "$middle" | cut -d, -f1)
+middle_points=$(echo "$middle" | cut -d, -f2)
+middle_path=$(echo "$middle" | cut -d, -f7-)
+measure "$work/single.time" "$work/single.log" "$tool" optimal "$middle_path" -o "$work/single.csv" --orientation up \
+  --threads "$threads" "${grid[@]+"${grid[@]}"}"
+read -r single_seconds single_cpu single_kb < <(read_time "$work/single.time")
+rm -f "$work/single.csv"
+
+per_point() { awk -v s="$1" -v n="$2" 'BEGIN { if(s > 0) printf "%.2f", 1e6 * s / n; else printf "n/a" }'; } # us
+{
+  echo
+  echo "| run | tiles | points | jobs x threads | wall (s) | wall per point (us) | job wall per point (us) | job CPU per point (us) | largest peak RSS of a job (MiB) |"
+  echo "|---|---:|---:|---|---:|---:|---:|---:|---:|"
+  printf '| %s%s | %d | %d | %d x %d | %.1f | %s | %s | %s | %d (%s) |\n' "$(basename "$survey")" \
+    "$([ "$done_before" -eq 0 ] || echo " (resumed: $done_before tiles from earlier runs)")" "$tiles" "$survey_points" \
+    "$jobs" "$threads" "$wall" "$(per_point "$wall" "$survey_points")" "$(per_point "$job_seconds" "$survey_points")" \
+    "$(per_point "$cpu_seconds" "$survey_points")" $((peak_kb / 1024)) "$peak_tile"
+  printf '| one tile in memory: %s | 1 | %d | 1 x %d | %.1f | %s | %s | %s | %d |\n' "$middle_name" "$middle_points" \
+    "$threads" "$single_seconds" "$(per_point "$single_seconds" "$middle_points")" \
+    "$(per_point "$single_seconds" "$middle_points")" "$(per_point "$single_cpu" "$middle_points")" $((single_kb / 1024))
+  echo
+  echo "survey files: $survey_bytes bytes; CSV outputs kept: ${csv_bytes:-0} bytes in $out"
+} | tee -a "$work/results.md"

@@ -1,0 +1,302 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Writing uncompressed LAS files (ASPRS LAS 1.4 R15): the fields of the public header block that a
+// writer of tiles changes (point counts, bounding box, the offsets of what follows the points),
+// computed from the point records written, and the layout of an input whose records are copied.
+// Standard C++ alone: benchmark/generate_survey.cpp writes its tiles with it too.
+
+#ifndef SIGMOID_NEIGHBORHOODS_TOOL_LAS_WRITER_H
+#define SIGMOID_NEIGHBORHOODS_TOOL_LAS_WRITER_H
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <istream>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace sigmoid_tool {
+namespace las {
+
+// Byte offsets in the public header block (LAS 1.4 R15, Table 3); every number little-endian.
+constexpr std::size_t GLOBAL_ENCODING = 6;              // uint16
+constexpr std::size_t VERSION_MAJOR = 24, VERSION_MINOR = 25;
+constexpr std::size_t HEADER_SIZE = 94;                 // uint16
+constexpr std::size_t OFFSET_TO_POINT_DATA = 96;        // uint32
+constexpr std::size_t NUMBER_OF_VLRS = 100;             // uint32
+constexpr std::size_t POINT_FORMAT = 104;               // uint8; LASzip sets bit 7, some writers bit 6
+constexpr std::size_t RECORD_LENGTH = 105;              // uint16
+constexpr std::size_t LEGACY_POINT_COUNT = 107;         // uint32
+constexpr std::size_t LEGACY_POINTS_BY_RETURN = 111;    // 5 x uint32
+constexpr std::size_t SCALE = 131, OFFSET = 155;        // 3 doubles each
+constexpr std::size_t BOUNDS = 179;                     // max x, min x, max y, min y, max z, min z
+constexpr std::size_t WAVEFORM_DATA_START = 227;        // uint64, LAS 1.3 and 1.4
+constexpr std::size_t FIRST_EVLR_START = 235;           // uint64, LAS 1.4
+constexpr std::size_t NUMBER_OF_EVLRS = 243;            // uint32, LAS 1.4
+constexpr std::size_t POINT_COUNT = 247;                // uint64, LAS 1.4
+constexpr std::size_t POINTS_BY_RETURN = 255;           // 15 x uint64, LAS 1.4
+
+constexpr std::size_t HEADER_BYTES_1_0 = 227; // LAS 1.0 to 1.2; the least any version takes
+constexpr std::size_t HEADER_BYTES_1_3 = 235;
+constexpr std::size_t HEADER_BYTES_1_4 = 375;
+constexpr std::size_t VLR_HEADER_BYTES = 54;
+constexpr unsigned int LAST_POINT_FORMAT = 10;
+constexpr unsigned int FIRST_EXTENDED_FORMAT = 6; // formats 6-10: 4-bit return numbers, no legacy counts
+constexpr std::uint16_t POINT_RECORD_BYTES[LAST_POINT_FORMAT + 1] = {20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67};
+constexpr unsigned int COMPRESSION_BITS = 0xC0; // of the format byte
+constexpr unsigned int FORMAT_BITS = 0x3F;
+constexpr unsigned int WAVEFORM_DATA_INTERNAL = 0x2; // bit 1 of the global encoding
+constexpr std::size_t LEGACY_RETURNS = 5, RETURNS = 15;
+
+// A LAS file that cannot be copied or written; the message is one line.
+struct Las_format_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+inline std::string laz_refusal()
+{
+  return "LAZ (compressed LAS) is not read: decompress it first, e.g. 'laszip -i FILE.laz -o FILE.las' or "
+         "'pdal translate FILE.laz FILE.las'";
+}
+
+template <typename T>
+using Unsigned_of_size =
+  typename std::conditional<sizeof(T) == 8, std::uint64_t,
+    typename std::conditional<sizeof(T) == 4, std::uint32_t,
+      typename std::conditional<sizeof(T) == 2, std::uint16_t, std::uint8_t>::type>::type>::type;
+
+// Little-endian numbers at any address, whatever the machine's byte order.
+template <typename T>
+T get(const unsigned char* bytes)
+{
+  typedef Unsigned_of_size<T> Unsigned;
+  static_assert(sizeof(Unsigned) == sizeof(T) && std::is_trivially_copyable<T>::value, "a plain number");
+  Unsigned u = 0;
+  for(std::size_t i = sizeof(T); i-- > 0;)
+    u = Unsigned(Unsigned(u << 8) | Unsigned(bytes[i]));
+  T value;
+  std::memcpy(&value, &u, sizeof(T));
+  return value;
+}
+
+template <typename T>
+void put(unsigned char* bytes, T value)
+{
+  typedef Unsigned_of_size<T> Unsigned;
+  static_assert(sizeof(Unsigned) == sizeof(T) && std::is_trivially_copyable<T>::value, "a plain number");
+  Unsigned u;
+  std::memcpy(&u, &value, sizeof(T));
+  for(std::size_t i = 0; i < sizeof(T); ++i, u = Unsigned(u >> 8))
+    bytes[i] = static_cast<unsigned char>(u & 0xFF);
+}
+
+// What a header says of the point records after it, gathered as they are written.
+struct Point_summary
+{
+  std::uint64_t count = 0;
+  std::array<std::uint64_t, RETURNS> by_return{}; // returns 1 to 15; a return number 0 counts nowhere
+  std::array<std::int32_t, 3> min{{(std::numeric_limits<std::int32_t>::max)(),
+                                   (std::numeric_limits<std::int32_t>::max)(),
+                                   (std::numeric_limits<std::int32_t>::max)()}};
+  std::array<std::int32_t, 3> max{{(std::numeric_limits<std::int32_t>::min)(),
+                                   (std::numeric_limits<std::int32_t>::min)(),
+                                   (std::numeric_limits<std::int32_t>::min)()}};
+
+  void add(const unsigned char* record, bool extended_format)
+  {
+    ++count;
+    for(int c = 0; c < 3; ++c)
+    {
+      const std::int32_t v = get<std::int32_t>(record + 4 * c);
+      min[c] = (std::min)(min[c], v);
+      max[c] = (std::max)(max[c], v);
+    }
+    const unsigned int return_number = extended_format ? (record[14] & 0x0F) : (record[14] & 0x07);
+    if(return_number >= 1)
+      ++by_return[return_number - 1];
+  }
+};
+
+// Writes into `header`, a public header block of `header_size` bytes that holds the version, the
+// point format, the scales and the offsets, the counts and the bounding box of `points`. LAS 1.4
+// rules: the 64-bit counts always; the legacy 32-bit counts are 0 in point formats 6-10 and when the
+// count exceeds 32 bits, else equal to the 64-bit ones (returns 1 to 5). Before LAS 1.4 the legacy
+// counts are the only ones, and a count beyond 32 bits cannot be written.
+inline void write_point_summary(unsigned char* header, std::size_t header_size, const Point_summary& points)
+{
+  const unsigned int minor = header[VERSION_MINOR];
+  const unsigned int format = header[POINT_FORMAT] & FORMAT_BITS;
+  const bool has_64_bit_counts = minor >= 4 && header_size >= HEADER_BYTES_1_4;
+  const bool fits_legacy = points.count <= (std::numeric_limits<std::uint32_t>::max)();
+  if(!has_64_bit_counts && !fits_legacy)
+    throw Las_format_error(std::to_string(points.count) + " points: more than a LAS 1." + std::to_string(minor) +
+                           " header can count (32 bits)");
+  const bool legacy = !has_64_bit_counts || (format < FIRST_EXTENDED_FORMAT && fits_legacy);
+  put<std::uint32_t>(header + LEGACY_POINT_COUNT, legacy ? std::uint32_t(points.count) : 0u);
+  for(std::size_t r = 0; r < LEGACY_RETURNS; ++r)
+    put<std::uint32_t>(header + LEGACY_POINTS_BY_RETURN + 4 * r, legacy ? std::uint32_t(points.by_return[r]) : 0u);
+  if(has_64_bit_counts)
+  {
+    put<std::uint64_t>(header + POINT_COUNT, points.count);
+    for(std::size_t r = 0; r < RETURNS; ++r)
+      put<std::uint64_t>(header + POINTS_BY_RETURN + 8 * r, points.by_return[r]);
+  }
+  // The coordinates as a reader computes them, raw * scale + offset; a negative scale swaps the ends.
+  for(int c = 0; c < 3; ++c)
+  {
+    double low = 0., high = 0.;
+    if(points.count != 0)
+    {
+      const double scale = get<double>(header + SCALE + 8 * c), offset = get<double>(header + OFFSET + 8 * c);
+      const double a = double(points.min[c]) * scale + offset, b = double(points.max[c]) * scale + offset;
+      low = (std::min)(a, b);
+      high = (std::max)(a, b);
+    }
+    put<double>(header + BOUNDS + 16 * c, high);
+    put<double>(header + BOUNDS + 16 * c + 8, low);
+  }
+}
+
+// An uncompressed LAS file as a tile writer copies it: everything before the point records (public
+// header block, VLRs and any bytes up to the point data), the records, and a trailer after them
+// (the EVLRs of LAS 1.4 and the waveform data packets stored in the file), copied whole.
+struct Las_layout
+{
+  std::vector<unsigned char> prefix; // the bytes before the point records, header first
+  unsigned int version_minor = 0;
+  unsigned int point_format = 0;
+  std::uint16_t header_size = 0;
+  std::uint16_t record_length = 0;
+  std::uint64_t point_count = 0;
+  std::array<double, 3> scale{{0., 0., 0.}}, offset{{0., 0., 0.}};
+  std::uint64_t point_data_start = 0, point_data_end = 0;
+  std::uint64_t trailer_start = 0, file_size = 0; // no trailer: trailer_start == file_size
+  std::uint32_t evlrs = 0;
+
+  bool has_extended_format() const { return point_format >= FIRST_EXTENDED_FORMAT; }
+  std::uint64_t trailer_bytes() const { return file_size - trailer_start; }
+};
+
+inline Las_format_error las_error(const std::string& reason)
+{
+  return Las_format_error("cannot parse the file as las (" + reason + ")");
+}
+
+// The layout of the LAS file of `file_size` bytes read from `in`, at its start, checked as the
+// package's reader checks it (signature, version 1.0 to 1.4, point formats 0 to 10, no compression,
+// every announced record within the file); `in` is left after the prefix.
+inline Las_layout read_las_layout(std::istream& in, std::uint64_t file_size)
+{
+  unsigned char b[HEADER_BYTES_1_4] = {};
+  const std::size_t available = std::size_t((std::min)(file_size, std::uint64_t(HEADER_BYTES_1_4)));
+  if(!in.read(reinterpret_cast<char*>(b), std::streamsize(available)))
+    throw las_error("read error in the header");
+  if(available < 4 || std::memcmp(b, "LASF", 4) != 0)
+    throw las_error("no LAS signature 'LASF' at the start");
+  if(available < HEADER_BYTES_1_0)
+    throw las_error("a file of " + std::to_string(file_size) + " bytes ends in the header");
+  Las_layout l;
+  l.file_size = file_size;
+  l.version_minor = b[VERSION_MINOR];
+  if(b[VERSION_MAJOR] != 1 || l.version_minor > 4)
+    throw las_error("version " + std::to_string(b[VERSION_MAJOR]) + "." + std::to_string(l.version_minor) +
+                    " is not read: expected 1.0 to 1.4");
+  l.header_size = get<std::uint16_t>(b + HEADER_SIZE);
+  if(l.header_size < HEADER_BYTES_1_0 || l.header_size > file_size)
+    throw las_error("a header size of " + std::to_string(l.header_size) + " bytes");
+  const unsigned int format_byte = b[POINT_FORMAT];
+  if((format_byte & COMPRESSION_BITS) != 0)
+    throw Las_format_error(laz_refusal() + " (the point data format byte is " + std::to_string(format_byte) +
+                           ": compressed)");
+  l.point_format = format_byte & FORMAT_BITS;
+  if(l.point_format > LAST_POINT_FORMAT)
+    throw las_error("point data format " + std::to_string(l.point_format) + " is not read: expected 0 to 10");
+  l.record_length = get<std::uint16_t>(b + RECORD_LENGTH);
+  if(l.record_length < POINT_RECORD_BYTES[l.point_format])
+    throw las_error("point records of " + std::to_string(l.record_length) + " bytes, less than the " +
+                    std::to_string(POINT_RECORD_BYTES[l.point_format]) + " of point data format " +
+                    std::to_string(l.point_format));
+  const bool is_1_4 = l.version_minor == 4 && l.header_size >= HEADER_BYTES_1_4 && available >= HEADER_BYTES_1_4;
+  l.point_count = get<std::uint32_t>(b + LEGACY_POINT_COUNT);
+  if(is_1_4 && get<std::uint64_t>(b + POINT_COUNT) != 0)
+    l.point_count = get<std::uint64_t>(b + POINT_COUNT);
+  for(int c = 0; c < 3; ++c)
+  {
+    l.scale[c] = get<double>(b + SCALE + 8 * c);
+    l.offset[c] = get<double>(b + OFFSET + 8 * c);
+    if(!std::isfinite(l.scale[c]) || l.scale[c] == 0. || !std::isfinite(l.offset[c]))
+      throw las_error("a zero or non-finite scale factor or offset");
+  }
+  l.point_data_start = get<std::uint32_t>(b + OFFSET_TO_POINT_DATA);
+  if(l.point_data_start < l.header_size || l.point_data_start > file_size)
+    throw las_error("point data at byte " + std::to_string(l.point_data_start) + ", outside the file's " +
+                    std::to_string(file_size) + " bytes after its header");
+  if(l.point_count > (file_size - l.point_data_start) / l.record_length)
+    throw las_error("the header announces " + std::to_string(l.point_count) + " points of " +
+                    std::to_string(l.record_length) + " bytes from byte " + std::to_string(l.point_data_start) +
+                    ", more than the file's " + std::to_string(file_size) + " bytes hold");
+  l.point_data_end = l.point_data_start + l.point_count * l.record_length;
+
+  // What follows the points and is copied with them; bytes between the two (padding) are dropped.
+  l.trailer_start = file_size;
+  if(is_1_4 && get<std::uint32_t>(b + NUMBER_OF_EVLRS) != 0)
+  {
+    l.evlrs = get<std::uint32_t>(b + NUMBER_OF_EVLRS);
+    const std::uint64_t start = get<std::uint64_t>(b + FIRST_EVLR_START);
+    if(start < l.point_data_end || start > file_size)
+      throw las_error("the first EVLR at byte " + std::to_string(start) + ", not after the point records");
+    l.trailer_start = start;
+  }
+  const std::uint64_t waveforms = l.header_size >= HEADER_BYTES_1_3 ? get<std::uint64_t>(b + WAVEFORM_DATA_START) : 0;
+  if(l.version_minor >= 3 && (get<std::uint16_t>(b + GLOBAL_ENCODING) & WAVEFORM_DATA_INTERNAL) != 0 &&
+     waveforms != 0)
+  {
+    if(waveforms < l.point_data_end || waveforms > file_size)
+      throw las_error("waveform data at byte " + std::to_string(waveforms) + ", not after the point records");
+    l.trailer_start = (std::min)(l.trailer_start, waveforms);
+  }
+
+  l.prefix.assign(b, b + available);
+  l.prefix.resize(l.point_data_start);
+  if(l.point_data_start > available &&
+     !in.read(reinterpret_cast<char*>(l.prefix.data() + available), std::streamsize(l.point_data_start - available)))
+    throw las_error("read error in the variable length records");
+  if(l.point_data_start < available)
+    in.seekg(std::streamoff(l.point_data_start));
+  return l;
+}
+
+// The public header block of a copy of `layout` that holds the records summed up in `points`,
+// its trailer (when any) right after them.
+inline std::vector<unsigned char> copied_header(const Las_layout& layout, const Point_summary& points)
+{
+  std::vector<unsigned char> header(layout.prefix.begin(), layout.prefix.begin() + layout.header_size);
+  write_point_summary(header.data(), header.size(), points);
+  if(layout.trailer_start == layout.file_size)
+    return header;
+  // The offsets into the trailer move with it; a point's offset to its waveform packet is relative to
+  // the start of the waveform data record (field WAVEFORM_DATA_START), so the records stay right.
+  const std::uint64_t new_start = layout.point_data_start + points.count * layout.record_length;
+  for(std::size_t field : {WAVEFORM_DATA_START, FIRST_EVLR_START})
+  {
+    if(field + 8 > header.size())
+      continue;
+    const std::uint64_t at = get<std::uint64_t>(header.data() + field);
+    if(at >= layout.trailer_start && at < layout.file_size)
+      put<std::uint64_t>(header.data() + field, at - layout.trailer_start + new_start);
+  }
+  return header;
+}
+
+} // namespace las
+} // namespace sigmoid_tool
+
+#endif // SIGMOID_NEIGHBORHOODS_TOOL_LAS_WRITER_H

@@ -1,0 +1,469 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// `sigmoid-neighborhoods catalog retile`: one LAS file cut into square tiles, a catalog for
+// `optimal --catalog`. Streamed: the input is read a chunk at a time, each tile's records wait in a
+// bounded buffer, a bounded number of tile files is open at once (the others are reopened to append),
+// so that the memory does not grow with the input. Every tile is the input's header and VLRs, its
+// own records byte for byte in the input's order, and the input's EVLRs; the header's counts,
+// bounding box and offsets are those of the tile.
+
+#ifndef SIGMOID_NEIGHBORHOODS_TOOL_RETILE_COMMAND_H
+#define SIGMOID_NEIGHBORHOODS_TOOL_RETILE_COMMAND_H
+
+#include "command_line.h"
+#include "las_writer.h"
+
+#include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include <unistd.h>
+
+namespace sigmoid_tool {
+
+// What bounds the memory and the open files of a retile, whatever the size of the input.
+constexpr std::size_t RETILE_READ_BYTES = std::size_t(1) << 22;        // records read at a time
+constexpr std::size_t RETILE_TILE_BUFFER_BYTES = std::size_t(1) << 20; // one tile's records before a write, at most
+constexpr double RETILE_DEFAULT_BUFFER_MIB = 64.;                       // all tiles' records waiting, together
+constexpr unsigned int RETILE_DEFAULT_OPEN_FILES = 64;                  // far below the usual limit of 1024
+constexpr std::size_t RETILE_LARGEST_TILE_COUNT = 100000;              // files in one folder
+constexpr double RETILE_LARGEST_CELL_INDEX = 1e15;                     // the names stay short
+
+// --buffer and --open-files: the memory of the records waiting to be written, all tiles together,
+// and the tile files open at once.
+struct Retile_limits
+{
+  std::size_t waiting_bytes = std::size_t(RETILE_DEFAULT_BUFFER_MIB * 1024 * 1024);
+  std::size_t open_files = RETILE_DEFAULT_OPEN_FILES;
+
+  // A tile writes its records once it holds an eighth of the buffer (a few writes of many tiles
+  // share it), 1 MiB at most.
+  std::size_t tile_bytes() const { return (std::min)(RETILE_TILE_BUFFER_BYTES, waiting_bytes / 8); }
+};
+
+// How the cell indices of one axis are written in the tile names: zero-padded to one width, so that
+// the bytewise order of the names is the order of the indices. When an index of the axis is
+// negative, every index of the axis is written plus 10^w, w the digits of the largest magnitude,
+// on w + 1 digits.
+struct Cell_index_format
+{
+  std::uint64_t bias = 0;
+  int width = 1;
+
+  Cell_index_format(std::int64_t lowest, std::int64_t highest)
+  {
+    const std::uint64_t largest = (std::max)(lowest < 0 ? std::uint64_t(-(lowest + 1)) + 1 : std::uint64_t(lowest),
+                                             highest < 0 ? std::uint64_t(-(highest + 1)) + 1 : std::uint64_t(highest));
+    std::uint64_t power = 10;
+    for(width = 1; largest >= power; ++width)
+      power *= 10;
+    if(lowest < 0)
+    {
+      bias = power;
+      ++width;
+    }
+  }
+
+  std::string text(std::int64_t index) const
+  {
+    const std::uint64_t shifted = index < 0 ? bias - (std::uint64_t(-(index + 1)) + 1) : bias + std::uint64_t(index);
+    std::string digits = std::to_string(shifted);
+    return std::string(std::size_t((std::max)(0, width - int(digits.size()))), '0') + digits;
+  }
+};
+
+// One output tile while the input streams: its records waiting to be written, its temporary file.
+struct Retiled_tile
+{
+  std::int64_t i = 0, j = 0;
+  std::string temporary;
+  las::Point_summary points;
+  std::vector<unsigned char> waiting;
+  std::unique_ptr<std::ofstream> file; // null while closed
+  std::uint64_t last_use = 0;
+  bool started = false; // the temporary exists and begins with the input's prefix
+};
+
+// The tiles of one retile, written in the folder under temporary names; a failure (an exception,
+// the destructor without commit()) removes every one of them.
+class Retiled_tiles
+{
+public:
+  Retiled_tiles(const las::Las_layout& layout, const std::string& folder, const std::string& stem,
+                const Retile_limits& limits)
+    : m_layout(layout), m_folder(folder), m_stem(stem), m_limits(limits)
+  {
+  }
+
+  Retiled_tiles(const Retiled_tiles&) = delete;
+  Retiled_tiles& operator=(const Retiled_tiles&) = delete;
+
+  ~Retiled_tiles()
+  {
+    for(Retiled_tile& t : m_tiles)
+    {
+      t.file.reset();
+      if(t.started)
+        std::remove(t.temporary.c_str());
+    }
+    for(const std::string& path : m_committed_on_failure)
+      std::remove(path.c_str());
+  }
+
+  std::size_t size() const { return m_tiles.size(); }
+
+  void add(std::int64_t i, std::int64_t j, const unsigned char* record)
+  {
+    Retiled_tile& t = tile(i, j);
+    t.points.add(record, m_layout.has_extended_format());
+    const std::size_t held = t.waiting.capacity();
+    t.waiting.insert(t.waiting.end(), record, record + m_layout.record_length);
+    m_held += t.waiting.capacity() - held;
+    if(t.waiting.size() >= m_limits.tile_bytes())
+      write_waiting(t);
+    if(m_held >= m_limits.waiting_bytes)
+      release_largest_buffers();
+  }
+
+  // Writes what waits, the trailer (the input's EVLRs) and each tile's header.
+  void finish(std::istream& input)
+  {
+    for(Retiled_tile& t : m_tiles)
+      write_waiting(t);
+    for(Retiled_tile& t : m_tiles)
+      close(t);
+    std::vector<char> bytes;
+    for(Retiled_tile& t : m_tiles)
+    {
+      std::fstream f(t.temporary, std::ios::in | std::ios::out | std::ios::binary);
+      if(!f)
+        throw write_error(t.temporary);
+      if(m_layout.trailer_bytes() != 0)
+      {
+        f.seekp(0, std::ios::end);
+        input.clear();
+        input.seekg(std::streamoff(m_layout.trailer_start));
+        for(std::uint64_t left = m_layout.trailer_bytes(); left != 0;)
+        {
+          const std::size_t n = std::size_t((std::min)(left, std::uint64_t(RETILE_READ_BYTES)));
+          bytes.resize(n);
+          if(!input.read(bytes.data(), std::streamsize(n)))
+            throw Usage_error("read error in the EVLRs");
+          if(!f.write(bytes.data(), std::streamsize(n)))
+            throw write_error(t.temporary);
+          left -= n;
+        }
+      }
+      const std::vector<unsigned char> header = las::copied_header(m_layout, t.points);
+      f.seekp(0);
+      f.write(reinterpret_cast<const char*>(header.data()), std::streamsize(header.size()));
+      f.close();
+      if(f.fail())
+        throw write_error(t.temporary);
+      const std::uint64_t expected =
+        m_layout.point_data_start + t.points.count * m_layout.record_length + m_layout.trailer_bytes();
+      std::error_code ec;
+      if(std::filesystem::file_size(t.temporary, ec) != expected || ec)
+        throw std::runtime_error(t.temporary + ": not of the " + std::to_string(expected) + " bytes written");
+    }
+  }
+
+  // Renames the temporaries to their names, STEM_I_J.las: the tiles are there, complete; `note`
+  // receives how the indices are written when an axis has negative ones.
+  void commit(std::string& note)
+  {
+    std::int64_t i_low = m_tiles.front().i, i_high = i_low, j_low = m_tiles.front().j, j_high = j_low;
+    for(const Retiled_tile& t : m_tiles)
+    {
+      i_low = (std::min)(i_low, t.i);
+      i_high = (std::max)(i_high, t.i);
+      j_low = (std::min)(j_low, t.j);
+      j_high = (std::max)(j_high, t.j);
+    }
+    const Cell_index_format i_format(i_low, i_high), j_format(j_low, j_high);
+    for(const auto& axis : {std::make_pair('i', i_format), std::make_pair('j', j_format)})
+      if(axis.second.bias != 0)
+        note += std::string(", ") + axis.first + " + " + std::to_string(axis.second.bias) + " in the names";
+    for(Retiled_tile& t : m_tiles)
+    {
+      const std::string name =
+        (std::filesystem::path(m_folder) / (m_stem + "_" + i_format.text(t.i) + "_" + j_format.text(t.j) + ".las"))
+          .string();
+      if(std::rename(t.temporary.c_str(), name.c_str()) != 0)
+        throw write_error(name);
+      t.started = false;
+      m_committed_on_failure.push_back(name);
+    }
+    m_committed_on_failure.clear();
+  }
+
+private:
+  static Usage_error write_error(const std::string& path)
+  {
+    return Usage_error("cannot write " + path + ": " + (errno != 0 ? std::strerror(errno) : "write error"));
+  }
+
+  Retiled_tile& tile(std::int64_t i, std::int64_t j)
+  {
+    if(m_last < m_tiles.size() && m_tiles[m_last].i == i && m_tiles[m_last].j == j)
+      return m_tiles[m_last]; // the records of a scan come mostly in runs of one tile
+    const auto found = m_index.emplace(std::make_pair(i, j), m_tiles.size());
+    if(found.second)
+    {
+      if(m_tiles.size() == RETILE_LARGEST_TILE_COUNT)
+        throw Usage_error("more than " + std::to_string(RETILE_LARGEST_TILE_COUNT) +
+                          " tiles: choose a larger --size");
+      m_tiles.emplace_back();
+      Retiled_tile& t = m_tiles.back();
+      t.i = i;
+      t.j = j;
+      t.temporary = (std::filesystem::path(m_folder) / (m_stem + ".retile" + std::to_string(m_tiles.size() - 1) +
+                                                        TEMPORARY_SUFFIX + std::to_string(::getpid())))
+                      .string();
+    }
+    m_last = found.first->second;
+    return m_tiles[m_last];
+  }
+
+  // Writes the records of the tiles that hold the most memory and frees it, down to half the buffer.
+  void release_largest_buffers()
+  {
+    std::vector<std::size_t> order;
+    for(std::size_t k = 0; k < m_tiles.size(); ++k)
+      if(m_tiles[k].waiting.capacity() != 0)
+        order.push_back(k);
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return m_tiles[a].waiting.capacity() > m_tiles[b].waiting.capacity();
+    });
+    for(std::size_t k : order)
+    {
+      if(m_held <= m_limits.waiting_bytes / 2)
+        break;
+      Retiled_tile& t = m_tiles[k];
+      write_waiting(t);
+      m_held -= t.waiting.capacity();
+      std::vector<unsigned char>().swap(t.waiting);
+    }
+  }
+
+  void write_waiting(Retiled_tile& t)
+  {
+    if(t.waiting.empty())
+      return;
+    std::ofstream& out = open(t);
+    errno = 0;
+    if(!out.write(reinterpret_cast<const char*>(t.waiting.data()), std::streamsize(t.waiting.size())))
+      throw write_error(t.temporary);
+    t.waiting.clear(); // its memory kept for the next records, counted in m_held
+  }
+
+  std::ofstream& open(Retiled_tile& t)
+  {
+    t.last_use = ++m_clock;
+    if(t.file)
+      return *t.file;
+    if(m_open.size() >= m_limits.open_files)
+    {
+      const auto oldest = std::min_element(m_open.begin(), m_open.end(), [&](std::size_t a, std::size_t b) {
+        return m_tiles[a].last_use < m_tiles[b].last_use;
+      });
+      close(m_tiles[*oldest]);
+    }
+    errno = 0;
+    t.file.reset(new std::ofstream(t.temporary, std::ios::binary | (t.started ? std::ios::app : std::ios::trunc)));
+    if(!*t.file)
+      throw write_error(t.temporary);
+    if(!t.started)
+    {
+      t.started = true;
+      if(!t.file->write(reinterpret_cast<const char*>(m_layout.prefix.data()), std::streamsize(m_layout.prefix.size())))
+        throw write_error(t.temporary);
+    }
+    m_open.push_back(std::size_t(&t - m_tiles.data()));
+    return *t.file;
+  }
+
+  void close(Retiled_tile& t)
+  {
+    if(!t.file)
+      return;
+    errno = 0;
+    t.file->close();
+    const bool failed = t.file->fail();
+    t.file.reset();
+    m_open.erase(std::find(m_open.begin(), m_open.end(), std::size_t(&t - m_tiles.data())));
+    if(failed)
+      throw write_error(t.temporary);
+  }
+
+  const las::Las_layout& m_layout;
+  std::string m_folder, m_stem;
+  Retile_limits m_limits;
+  std::vector<Retiled_tile> m_tiles;
+  std::map<std::pair<std::int64_t, std::int64_t>, std::size_t> m_index;
+  std::size_t m_last = std::size_t(-1);
+  std::vector<std::size_t> m_open; // the tiles whose file is open
+  std::uint64_t m_clock = 0;
+  std::size_t m_held = 0; // the memory of the tiles' buffers: what --buffer bounds
+  std::vector<std::string> m_committed_on_failure;
+};
+
+// --origin X Y, taken out of the arguments: Arguments reads options of one or of three values.
+inline std::vector<char*> take_origin(int argc, char** argv, double& x, double& y)
+{
+  std::vector<char*> rest(argv, argv + argc);
+  for(std::size_t k = FIRST_COMMAND_ARGUMENT + 1; k < rest.size(); ++k)
+  {
+    if(std::string(rest[k]) != "--origin")
+      continue;
+    double values[2];
+    for(int c = 0; c < 2; ++c)
+    {
+      const char* text = k + 1 + c < rest.size() ? rest[k + 1 + c] : "";
+      char* end = nullptr;
+      values[c] = std::strtod(text, &end);
+      if(*text == '\0' || *end != '\0' || !std::isfinite(values[c]))
+        throw Usage_error("--origin needs two finite numbers: --origin X Y");
+    }
+    x = values[0];
+    y = values[1];
+    rest.erase(rest.begin() + std::ptrdiff_t(k), rest.begin() + std::ptrdiff_t(k) + 3);
+    --k;
+  }
+  return rest;
+}
+
+// A folder that holds no tiles yet: the tiles of another cut in it would join this catalog.
+inline void check_retile_folder(const std::string& folder)
+{
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  if(ec)
+    throw Usage_error("cannot create " + folder + ": " + ec.message());
+  for(std::filesystem::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
+  {
+    const std::string extension = CGAL::Sigmoid_neighborhoods::lower_case_extension(it->path().string());
+    if(extension == "las" || extension == "laz" || extension == "ply" || extension == "xyz" || extension == "pwn")
+      throw Usage_error(folder + " already holds tiles (" + it->path().filename().string() +
+                        "): retile into a new or an empty folder");
+  }
+  if(ec)
+    throw Usage_error(folder + ": cannot list the folder (" + ec.message() + ")");
+}
+
+inline int run_retile(int argc, char** argv, const char* usage)
+{
+  const auto start = std::chrono::steady_clock::now();
+  double origin_x = 0., origin_y = 0.;
+  std::vector<char*> rest = take_origin(argc, argv, origin_x, origin_y);
+  const Arguments args(int(rest.size()), rest.data(), FIRST_COMMAND_ARGUMENT + 1,
+                       {"-o", "--output", "--size", "--buffer", "--open-files"}, {"-h", "--help"});
+  if(print_help(args, usage))
+    return EXIT_OK;
+  if(args.positional().size() != 1)
+    throw Usage_error("catalog retile needs exactly one INPUT.las");
+  const std::string input = args.positional()[0];
+  const std::string folder = args.output();
+  if(folder.empty())
+    throw Usage_error("catalog retile needs -o DIR");
+  if(!args.has("--size"))
+    throw Usage_error("catalog retile needs --size S");
+  const double size = args.get_double("--size", 0.);
+  if(!(size > 0.) || !std::isfinite(size))
+    throw Usage_error("--size must be a positive, finite tile side, got '" + args.get("--size") + "'");
+  Retile_limits limits;
+  const double buffer = args.get_double("--buffer", RETILE_DEFAULT_BUFFER_MIB);
+  if(!(buffer >= 0.01 && buffer <= 1024. * 1024.))
+    throw Usage_error("--buffer must be 0.01 to 1048576 MiB, got '" + args.get("--buffer") + "'");
+  limits.waiting_bytes = std::size_t(buffer * 1024 * 1024);
+  limits.open_files = args.get_unsigned("--open-files", RETILE_DEFAULT_OPEN_FILES);
+  if(limits.open_files == 0)
+    throw Usage_error("--open-files must be at least 1");
+
+  const std::string extension = CGAL::Sigmoid_neighborhoods::lower_case_extension(input);
+  if(extension == "laz")
+    throw Usage_error(input + ": " + las::laz_refusal());
+  if(extension != "las")
+    throw Usage_error(input + ": not a .las file");
+  std::ifstream in(input, std::ios::binary);
+  std::error_code ec;
+  const std::uintmax_t file_size = std::filesystem::file_size(input, ec);
+  if(!in || ec)
+    throw Usage_error(input + ": cannot open the file" + (ec ? " (" + ec.message() + ")" : std::string()));
+  las::Las_layout layout;
+  try
+  {
+    layout = las::read_las_layout(in, file_size);
+  }
+  catch(const las::Las_format_error& e)
+  {
+    throw Usage_error(input + ": " + e.what());
+  }
+  if(layout.point_count == 0)
+    throw Usage_error(input + ": no points, no tile to write");
+  check_retile_folder(folder);
+
+  Retiled_tiles tiles(layout, folder, std::filesystem::path(input).stem().string(), limits);
+  const std::size_t chunk_points = (std::max)(std::size_t(1), RETILE_READ_BYTES / layout.record_length);
+  std::vector<unsigned char> chunk;
+  in.seekg(std::streamoff(layout.point_data_start));
+  for(std::uint64_t first = 0; first < layout.point_count;)
+  {
+    const std::size_t count = std::size_t((std::min)(std::uint64_t(chunk_points), layout.point_count - first));
+    chunk.resize(count * layout.record_length);
+    if(!in.read(reinterpret_cast<char*>(chunk.data()), std::streamsize(chunk.size())))
+      throw Usage_error(input + ": cannot parse the file as las (the file ends in point " +
+                        std::to_string(first + std::uint64_t(in.gcount()) / layout.record_length) + ")");
+    for(std::size_t k = 0; k < count; ++k)
+    {
+      const unsigned char* record = chunk.data() + k * layout.record_length;
+      std::int64_t cell[2];
+      for(int c = 0; c < 2; ++c)
+      {
+        // The cells of compute_height_features(), shifted by the origin: floor((x - ox) / S).
+        const double coordinate = double(las::get<std::int32_t>(record + 4 * c)) * layout.scale[c] + layout.offset[c];
+        const double index = std::floor((coordinate - (c == 0 ? origin_x : origin_y)) / size);
+        if(!(std::abs(index) < RETILE_LARGEST_CELL_INDEX))
+          throw Usage_error(input + ": point " + std::to_string(first + k) + " lies " +
+                            (std::isfinite(index) ? "more than 1e15 tiles from the origin" : "at a non-finite coordinate"));
+        cell[c] = std::int64_t(index);
+      }
+      tiles.add(cell[0], cell[1], record);
+    }
+    first += count;
+  }
+  tiles.finish(in);
+  std::string note;
+  tiles.commit(note);
+
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  char timing[32];
+  std::snprintf(timing, sizeof(timing), "%.1f s", seconds);
+  std::cerr << folder << ": " << layout.point_count << " points of " << input << " in " << tiles.size()
+            << (tiles.size() == 1 ? " tile" : " tiles") << " of side " << number17(size)
+            << (layout.trailer_bytes() != 0
+                  ? ", its EVLRs and waveform data (" + std::to_string(layout.trailer_bytes()) + " bytes) in every tile"
+                  : std::string())
+            << note << ", " << timing << '\n';
+  return EXIT_OK;
+}
+
+} // namespace sigmoid_tool
+
+#endif // SIGMOID_NEIGHBORHOODS_TOOL_RETILE_COMMAND_H
