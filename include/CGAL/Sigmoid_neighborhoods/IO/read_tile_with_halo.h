@@ -232,8 +232,10 @@ inline Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size
   for(result.readings = 1;; ++result.readings)
   {
     const CGAL::Bbox_2 region = internal::widened(own.extent, width);
+    // the rows first: a halo too narrow is seen on them, before any normal is estimated
     internal::Catalog_points read = internal::read_catalog_points(catalog, &region);
-    internal::finish_catalog_points(read, o);
+    const bool estimated = internal::estimates_normals(read, o);
+    internal::compute_catalog_rows(read, o);
     const auto own_range = read.range_of(tile);
     const Oriented_point_set& s = read.set;
     const internal::Unread_space unread(catalog, region);
@@ -246,7 +248,7 @@ inline Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size
       for(std::size_t i = own_range.first; i < own_range.second; ++i)
         needed.push_back(i);
       largest = internal::largest_shortfall(s, needed, k, unread);
-      if(s.normals_estimated && largest <= 0.)
+      if(estimated && largest <= 0.)
       {
         std::vector<char> is_needed(s.points.size(), 0);
         for(std::size_t i = own_range.first; i < own_range.second; ++i)
@@ -264,6 +266,7 @@ inline Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size
     }
     if(largest <= 0.)
     {
+      internal::finish_catalog_points(read, o);
       result.points = std::move(read.set);
       result.first = own_range.first;
       result.last = own_range.second;
@@ -274,7 +277,7 @@ inline Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size
     }
     if(result.readings == internal::MAXIMUM_HALO_READINGS)
       throw Input_error(own.path + ": no halo up to " + std::to_string(width) + " holds the neighborhoods of the tile");
-    width += std::isfinite(largest) ? (std::max)(1.25 * largest, 0.25 * width) : width;
+    width += std::isfinite(largest) ? (std::max)(1.5 * largest, 0.5 * width) : width;
   }
 }
 

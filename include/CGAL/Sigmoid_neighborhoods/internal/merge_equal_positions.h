@@ -6,9 +6,9 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_MERGE_EQUAL_POSITIONS_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_MERGE_EQUAL_POSITIONS_H
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
-#include <map>
 #include <vector>
 
 namespace CGAL {
@@ -26,24 +26,44 @@ struct Merged_positions
 };
 
 // The distinct positions of the points `i` with `included[i]` (all points when `included` is empty).
-// Positions are equal when their coordinates are (so 0 and -0 are one position).
+// Positions are equal when their coordinates are (so 0 and -0 are one position). The points sorted
+// by position, ties by index, put each position's points together, its first one first: a sort of
+// indices, where a search tree of positions took a node per point.
 template <typename Point>
 Merged_positions merge_equal_positions(const std::vector<Point>& points, const std::vector<bool>& included = {})
 {
   Merged_positions result;
   result.position_of.assign(points.size(), Merged_positions::LEFT_OUT);
-  std::map<std::array<double, 3>, std::size_t> position_at;
+  std::vector<std::size_t> order;
+  order.reserve(points.size());
+  for(std::size_t i = 0; i < points.size(); ++i)
+    if(included.empty() || included[i])
+      order.push_back(i);
+  const auto position = [&](std::size_t i) {
+    return std::array<double, 3>{{double(points[i].x()), double(points[i].y()), double(points[i].z())}};
+  };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const auto pa = position(a), pb = position(b);
+    return pa < pb || (!(pb < pa) && a < b);
+  });
+  // each point's first point at its position; a first point is its own
+  std::vector<std::size_t> first_at(points.size(), Merged_positions::LEFT_OUT);
+  for(std::size_t r = 0; r < order.size(); ++r)
+    first_at[order[r]] = r > 0 && !(position(order[r - 1]) < position(order[r])) ? first_at[order[r - 1]] : order[r];
   for(std::size_t i = 0; i < points.size(); ++i)
   {
-    if(!included.empty() && !included[i])
+    if(first_at[i] == Merged_positions::LEFT_OUT)
       continue;
-    const auto inserted =
-      position_at.emplace(std::array<double, 3>{{points[i].x(), points[i].y(), points[i].z()}}, result.first.size());
-    if(inserted.second)
+    if(first_at[i] == i)
+    {
+      result.position_of[i] = result.first.size();
       result.first.push_back(i);
+    }
     else
+    {
+      result.position_of[i] = result.position_of[first_at[i]]; // set: the first comes before
       ++result.merged;
-    result.position_of[i] = inserted.first->second;
+    }
   }
   return result;
 }

@@ -160,26 +160,40 @@ inline Catalog_points read_catalog_points(const Tile_catalog& catalog, const CGA
   return out;
 }
 
-// Normals as read_oriented_point_set() gives them, on the read points, and the rows of
-// `o.kept_neighbors` neighbors.
-inline void finish_catalog_points(Catalog_points& read, const Normal_options& o)
+// Whether the normals of the read points are estimated (else the files').
+inline bool estimates_normals(const Catalog_points& read, const Normal_options& o)
 {
-  Oriented_point_set& s = read.set;
-  if(s.points.empty())
+  if(read.set.points.empty())
     throw Input_error("no points in the catalog's tiles");
   if(!read.has_normals && o.source == Normal_source::FROM_FILE)
     throw Input_error("the tiles have no normals");
-  if(!read.has_normals || o.source == Normal_source::PCA || o.source == Normal_source::JET)
-  {
-    if(o.neighbors == 0)
-      throw Input_error("the tiles have no normals, and none are estimated");
-    estimate_normals(s, o);
+  const bool estimated = !read.has_normals || o.source == Normal_source::PCA || o.source == Normal_source::JET;
+  if(estimated && o.neighbors == 0)
+    throw Input_error("the tiles have no normals, and none are estimated");
+  return estimated;
+}
+
+// The rows of the steps after and of the estimation, as estimate_normals() computes them, so that
+// it reuses them.
+inline void compute_catalog_rows(Catalog_points& read, const Normal_options& o)
+{
+  Oriented_point_set& s = read.set;
+  const unsigned int wanted = estimates_normals(read, o) ? (std::max)(o.neighbors, o.kept_neighbors) : o.kept_neighbors;
+  if(wanted == 0 || s.points.size() < 2)
     return;
-  }
-  if(o.kept_neighbors > 0 && s.points.size() > 1)
-    compute_k_nearest_neighbors<Parallel_if_available_tag>(
-      s.points, o.kept_neighbors, s.neighbor_indices, s.neighbor_offsets,
-      parameters::number_of_threads(o.threads, CGAL::parameters::point_map(CGAL::Identity_property_map<Oriented_point_set::Point_3>())));
+  compute_k_nearest_neighbors<Parallel_if_available_tag>(
+    s.points, unsigned((std::min)(std::size_t(wanted), s.points.size() - 1)), s.neighbor_indices, s.neighbor_offsets,
+    parameters::number_of_threads(o.threads, CGAL::parameters::point_map(CGAL::Identity_property_map<Oriented_point_set::Point_3>())));
+}
+
+// Normals as read_oriented_point_set() gives them, on the read points, and the rows of
+// `o.kept_neighbors` neighbors (those of compute_catalog_rows() when computed).
+inline void finish_catalog_points(Catalog_points& read, const Normal_options& o)
+{
+  if(estimates_normals(read, o))
+    estimate_normals(read.set, o);
+  else if(read.set.neighbor_offsets.empty())
+    compute_catalog_rows(read, o);
 }
 
 } // namespace internal

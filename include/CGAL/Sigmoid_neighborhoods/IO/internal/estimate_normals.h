@@ -60,7 +60,9 @@ inline void estimate_normals(Oriented_point_set& out, const Normal_options& o)
     o.threads, CGAL::parameters::point_map(CGAL::make_property_map(out.points)).normal_map(CGAL::make_property_map(out.normals)));
   try
   {
-    compute_k_nearest_neighbors<Parallel_if_available_tag>(indices, rows, out.neighbor_indices, out.neighbor_offsets, maps);
+    // rows the caller computed on these points already (a tile's halo checks them first) are reused
+    if(out.neighbor_offsets.size() != n + 1 || out.neighbor_offsets[1] != rows)
+      compute_k_nearest_neighbors<Parallel_if_available_tag>(indices, rows, out.neighbor_indices, out.neighbor_offsets, maps);
     // read in place: CGAL's named parameters copy what they hold unless given a reference
     const auto np = parameters::neighbor_indices(std::cref(out.neighbor_indices),
                                                  parameters::neighbor_offsets(std::cref(out.neighbor_offsets), maps));
