@@ -90,15 +90,29 @@ std::vector<SN::Optimal_sigmoid_neighborhood> optimal_records(const SN::Oriented
   return records;
 }
 
-// Every tile with its halo against the union: the same points, in the same order, with the same
-// normals, labels and records, bit for bit. Returns the tiles' halo widths.
-std::vector<double> check_tiles_equal_union(const SN::Tile_catalog& catalog, const SN::Normal_options& normals,
-                                            unsigned int k_max)
+struct Union_records
+{
+  SN::Oriented_point_set points;
+  std::vector<SN::Optimal_sigmoid_neighborhood> records;
+};
+
+Union_records union_records(const SN::Tile_catalog& catalog, const SN::Normal_options& normals, unsigned int k_max)
 {
   SN::Normal_options kept = normals;
   kept.kept_neighbors = k_max;
-  const SN::Oriented_point_set all = SN::read_catalog_union(catalog, kept);
-  const auto all_records = optimal_records(all, k_max);
+  Union_records u;
+  u.points = SN::read_catalog_union(catalog, kept);
+  u.records = optimal_records(u.points, k_max);
+  return u;
+}
+
+// Every tile with its halo against the union: the same points, in the same order, with the same
+// normals, labels and records, bit for bit. Returns the tiles' halo widths.
+std::vector<double> check_tiles_equal_union(const SN::Tile_catalog& catalog, const SN::Normal_options& normals,
+                                            unsigned int k_max, const Union_records& u)
+{
+  const SN::Oriented_point_set& all = u.points;
+  const auto& all_records = u.records;
   std::size_t next = 0; // the union's point the next tile starts with
   std::vector<double> widths;
   for(std::size_t t = 0; t < catalog.tiles.size(); ++t)
@@ -162,7 +176,7 @@ TEST_CASE("Tile catalog: tiles with halos equal the union on a grid of ties and 
 
   SN::Normal_options up;
   up.orientation = SN::Normal_orientation::UPWARD;
-  const auto widths = check_tiles_equal_union(catalog, up, 20);
+  const auto widths = check_tiles_equal_union(catalog, up, 20, union_records(catalog, up, 20));
   for(double w : widths)
     CHECK(w > 0.);
 
@@ -177,7 +191,8 @@ TEST_CASE("Tile catalog: tiles with halos equal the union on a grid of ties and 
   SECTION("normals from the files: the rows alone need the halo")
   {
     const SN::Tile_catalog with_normals = grid_catalog(true);
-    check_tiles_equal_union(with_normals, SN::Normal_options(), 12);
+    check_tiles_equal_union(with_normals, SN::Normal_options(), 12,
+                            union_records(with_normals, SN::Normal_options(), 12));
   }
   SECTION("viewpoint orientation and jet fitting are exact too; the forest is not promised")
   {
@@ -185,7 +200,7 @@ TEST_CASE("Tile catalog: tiles with halos equal the union on a grid of ties and 
     o.source = SN::Normal_source::JET;
     o.orientation = SN::Normal_orientation::VIEWPOINT;
     o.viewpoint = SN::Oriented_point_set::Point_3(30, 20, 100);
-    check_tiles_equal_union(catalog, o, 8);
+    check_tiles_equal_union(catalog, o, 8, union_records(catalog, o, 8));
     CHECK_FALSE(SN::read_tile_with_halo(catalog, 0, 8, SN::Normal_options()).exact);
   }
   SECTION("the narrowest and the first halo are honoured; a small first halo grows")
@@ -218,15 +233,14 @@ TEST_CASE("Tile catalog: the six IGN LiDAR HD tiles, with and without halos", "[
 
   SN::Normal_options up;
   up.orientation = SN::Normal_orientation::UPWARD;
-  check_tiles_equal_union(catalog, up, SN::DEFAULT_K_MAX);
+  const Union_records u = union_records(catalog, up, SN::DEFAULT_K_MAX);
+  check_tiles_equal_union(catalog, up, SN::DEFAULT_K_MAX, u);
 
   // Without halos, each file alone, as one gets it without a catalog: the points near the seams
   // get other neighborhoods. Matched by position (a seam's copy in the later tile has the record of
   // the union's point at its position).
-  SN::Normal_options kept = up;
-  kept.kept_neighbors = SN::DEFAULT_K_MAX;
-  const SN::Oriented_point_set all = SN::read_catalog_union(catalog, kept);
-  const auto all_records = optimal_records(all, SN::DEFAULT_K_MAX);
+  const SN::Oriented_point_set& all = u.points;
+  const auto& all_records = u.records;
   std::map<Position_bits, std::size_t> union_index;
   for(std::size_t i = 0; i < all.points.size(); ++i)
     union_index.emplace(position_bits(all.points[i]), i);

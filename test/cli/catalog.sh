@@ -4,7 +4,8 @@
 #
 # A catalog of four XYZ tiles written here: one tile per job through the Slurm recipe (with a
 # stand-in sbatch) and the GNU parallel recipe (when installed), merged, equal byte for byte to the
-# union in one run; a resumed run redoes only the missing tile; merge and optimal refuse what is
+# union in one run; a resumed run redoes only the missing tile; evaluate --catalog's per-point rows
+# equal the union's; merge and optimal refuse what is
 # wrong (exit 2, one line, nothing written).
 # usage: catalog.sh TOOL STAND_IN_SBATCH_DIR RECIPE_DIR
 set -eu
@@ -55,6 +56,18 @@ if command -v parallel > /dev/null; then
   grep -q "tile t_0_0" "$dir/resume.txt" && fail "t_0_0 redone"
   cmp "$dir/union.csv" "$dir/parallel/union.csv" || fail "the resumed union differs"
 fi
+
+# evaluate --catalog: every tile a model, its per-point rows those of the union as one file
+cat "$dir/tiles/t_0_0.xyz" "$dir/tiles/t_0_1.xyz" "$dir/tiles/t_1_0.xyz" "$dir/tiles/t_1_1.xyz" > "$dir/union.xyz"
+"$tool" evaluate --catalog "$dir/tiles" -o "$dir/evaluated" --per-point $options 2> "$dir/evaluate.txt" \
+  || fail "evaluate --catalog: $(cat "$dir/evaluate.txt")"
+"$tool" evaluate "$dir/union.xyz" -o "$dir/evaluated_union" --per-point --orientation up $options 2> "$dir/evaluate.txt" \
+  || fail "evaluate union: $(cat "$dir/evaluate.txt")"
+for t in t_0_0 t_0_1 t_1_0 t_1_1; do tail -n +2 "$dir/evaluated/models/$t.csv"; done > "$dir/evaluated_tiles.csv"
+tail -n +2 "$dir/evaluated_union/models/union.csv" | cmp - "$dir/evaluated_tiles.csv" \
+  || fail "evaluate --catalog: the tiles' per-point rows differ from the union's"
+grep -q '"points": 6561' "$dir/evaluated/summary.json" || fail "evaluate --catalog summary: $(head -c 600 "$dir/evaluated/summary.json")"
+"$tool" report "$dir/evaluated" -o "$dir/report" > /dev/null 2>&1 || fail "report of evaluate --catalog"
 
 # merge refuses: a missing tile, a tile twice, other settings, rows missing, a foreign tile, bad JSON
 t="$dir/slurm/tiles"

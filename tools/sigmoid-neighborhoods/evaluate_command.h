@@ -7,6 +7,7 @@
 #ifndef SIGMOID_NEIGHBORHOODS_TOOL_EVALUATE_COMMAND_H
 #define SIGMOID_NEIGHBORHOODS_TOOL_EVALUATE_COMMAND_H
 
+#include "catalog_input.h"
 #include "command_line.h"
 #include "evaluation_files.h"
 #include "optimal_command.h"
@@ -23,18 +24,23 @@
 #include <ctime>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace sigmoid_tool {
 
 inline const char* EVALUATE_USAGE =
-  "usage: sigmoid-neighborhoods evaluate INPUTS... -o OUTDIR [--repository NAME] [--shard I/N] [--threads N]\n"
+  "usage: sigmoid-neighborhoods evaluate INPUTS...|--catalog SOURCE -o OUTDIR [--repository NAME] [--shard I/N]\n"
+  "         [--threads N]"
   "         [--resume] [--per-point] [--only-with-normals] [--barycenter weighted|unweighted]\n"
   "         [--k-min 6] [--k-max 20] [--fixed-k K_MAX] [--a-grid ANGLES] [--b-grid ANGLES]\n"
   "         [--angle-tolerance 1e-6] [normals]\n"
   "  INPUTS: model files or folders (searched recursively for .off .obj .ply .stl .xyz .pwn)\n"
-  "  --shard I/N: evaluate the I-th of N shares (1 <= I <= N), balanced by file size\n";
+  "  --shard I/N: evaluate the I-th of N shares (1 <= I <= N), balanced by file size\n"
+  "  --catalog SOURCE: the tiles of a survey (a folder or a list file, see optimal --help) as the models,\n"
+  "      each evaluated on its own points with the halo that makes its per-point rows those of the\n"
+  "      union (estimated normals oriented upwards unless --orientation or --viewpoint says otherwise)\n";
 
 inline const char* MERGE_USAGE = "usage: sigmoid-neighborhoods merge OUTDIR... -o OUTDIR [--repository NAME]\n";
 
@@ -192,6 +198,28 @@ inline void write_evaluation_csv(std::ostream& out, const SN::Oriented_point_set
   }
 }
 
+// The tile's own points of `tile` (its halo left out) as a model, with their evaluations: what the
+// union gives those points. Its input is the tile's file; merged, its points of earlier tiles too.
+inline SN::Oriented_point_set own_points(const SN::Tile_with_halo& tile, std::vector<SN::Point_evaluation>& evaluations)
+{
+  const SN::Oriented_point_set& all = tile.points;
+  const auto first = std::ptrdiff_t(tile.first), last = std::ptrdiff_t(tile.last);
+  SN::Oriented_point_set own;
+  own.points.assign(all.points.begin() + first, all.points.begin() + last);
+  own.normals.assign(all.normals.begin() + first, all.normals.begin() + last);
+  if(!all.labels.empty())
+    own.labels.assign(all.labels.begin() + first, all.labels.begin() + last);
+  own.normals_estimated = all.normals_estimated;
+  own.estimation_method = all.estimation_method;
+  own.estimation_neighbors = all.estimation_neighbors;
+  own.orientation = all.orientation;
+  own.orientation_components = all.orientation_components;
+  own.input_vertices = tile.input_points;
+  own.merged_duplicates = tile.input_points - tile.size();
+  evaluations = std::vector<SN::Point_evaluation>(evaluations.begin() + first, evaluations.begin() + last);
+  return own;
+}
+
 inline Model_result model_result(const Model_file& file, const SN::Oriented_point_set& model,
                                  const std::vector<SN::Point_evaluation>& evaluations, const Evaluation_settings& s)
 {
@@ -252,7 +280,7 @@ inline int run_evaluate(int argc, char** argv)
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT,
                        with_normal_options({"-o", "--output", "--repository", "--shard", "--threads", "--barycenter",
                                             "--k-min", "--k-max", "--fixed-k", "--a-grid", "--b-grid",
-                                            "--angle-tolerance"}),
+                                            "--angle-tolerance", "--catalog"}),
                        with_normal_flags({"-h", "--help", "--resume", "--per-point", "--only-with-normals"}),
                        NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, EVALUATE_USAGE))
@@ -263,8 +291,8 @@ inline int run_evaluate(int argc, char** argv)
   const std::string outdir = args.output();
   if(outdir.empty())
     throw Usage_error("evaluate needs -o OUTDIR");
-  if(args.positional().empty())
-    throw Usage_error("evaluate needs at least one input file or folder");
+  if(args.positional().empty() == !args.has("--catalog"))
+    throw Usage_error("evaluate needs input files or folders, or --catalog SOURCE (not both)");
   const Search_options options = read_search_options(args);
   Evaluation_settings settings;
   settings.k_min = options.k_min;
@@ -277,10 +305,25 @@ inline int run_evaluate(int argc, char** argv)
   settings.cut_off_angle = std::acos(EVALUATION_CUT_OFF_COSINE);
   settings.a_grid = options.a_grid; // sorted and deduplicated, as the statistics keep them
   settings.b_grid = options.b_grid;
-  const SN::Normal_options normal_options = read_normal_options(args);
+  SN::Normal_options normal_options = read_normal_options(args);
+  std::unique_ptr<SN::Tile_catalog> catalog;
+  std::vector<Model_file> models;
+  if(args.has("--catalog"))
+  {
+    catalog.reset(new SN::Tile_catalog(read_catalog_argument(args.get("--catalog"))));
+    if(!args.has("--orientation") && !args.has("--viewpoint"))
+      normal_options.orientation = SN::Normal_orientation::UPWARD; // exact per tile
+    for(const SN::Catalog_tile& t : catalog->tiles)
+    {
+      std::error_code ec;
+      const std::uintmax_t bytes = fs::file_size(t.path, ec);
+      models.push_back({t.name, t.path, ec ? 0 : bytes});
+    }
+  }
+  else
+    models = find_models(args.positional());
   set_normal_settings(settings, normal_options, options.line_angles);
 
-  std::vector<Model_file> models = find_models(args.positional());
   unsigned int shard_index = 1, shard_count = 1;
   if(args.has("--shard"))
   {
@@ -291,10 +334,11 @@ inline int run_evaluate(int argc, char** argv)
     models = shard(models, shard_index, shard_count);
   }
   std::string repository = args.get("--repository");
+  const std::string first_input = catalog ? args.get("--catalog") : args.positional().front();
   if(repository.empty())
-    repository = fs::path(args.positional().front()).lexically_normal().filename().string();
+    repository = fs::path(first_input).lexically_normal().filename().string();
   if(repository.empty())
-    repository = fs::absolute(args.positional().front()).lexically_normal().parent_path().filename().string();
+    repository = fs::absolute(first_input).lexically_normal().parent_path().filename().string();
 
   create_output_folder(outdir, "models");
   remove_temporary_files(outdir);
@@ -320,15 +364,30 @@ inline int run_evaluate(int argc, char** argv)
     }
     try
     {
-      const SN::Oriented_point_set model =
-        read_model(file.path, options.k_max, normal_options, !args.has("--only-with-normals"));
-      if(model.normals.empty())
+      SN::Oriented_point_set model;
+      std::vector<SN::Point_evaluation> evaluations;
+      if(catalog)
       {
-        skipped_without_normals.push_back(file.name);
-        progress.done(file.name, 0, file.bytes, "skipped: no normals in the file");
-        continue;
+        SN::Normal_options o = normal_options;
+        o.kept_neighbors = options.k_max;
+        SN::Tile_with_halo tile =
+          SN::read_tile_with_halo(*catalog, catalog->index_of(file.name), options.k_max, o);
+        if(tile.points.points.size() < std::size_t(options.k_max) + 1)
+          throw Too_small_for_the_grid("too few points", std::size_t(options.k_max) + 1, tile.points.points.size());
+        evaluations = evaluate_model(tile.points, options, settings);
+        model = own_points(tile, evaluations);
       }
-      const auto evaluations = evaluate_model(model, options, settings);
+      else
+      {
+        model = read_model(file.path, options.k_max, normal_options, !args.has("--only-with-normals"));
+        if(model.normals.empty())
+        {
+          skipped_without_normals.push_back(file.name);
+          progress.done(file.name, 0, file.bytes, "skipped: no normals in the file");
+          continue;
+        }
+        evaluations = evaluate_model(model, options, settings);
+      }
       const Model_result result = model_result(file, model, evaluations, settings);
       fs::create_directories(json_path.parent_path());
       if(args.has("--per-point"))

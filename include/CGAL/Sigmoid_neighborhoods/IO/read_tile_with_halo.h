@@ -39,6 +39,7 @@ struct Tile_with_halo
   double halo_width = 0.;         ///< how far beyond the tile's extent the halo reaches, in `x` and `y`
   unsigned int readings = 0;      ///< the halos read until one held every neighborhood
   std::size_t seam_duplicates = 0; ///< the tile's points merged into an earlier tile's point at their position
+  std::size_t input_points = 0;    ///< the points of the tile's file (LAS: its records), before any merge
   /// the records of the tile's points are those of the union, bit for bit: every orientation but
   /// `Normal_orientation::SPANNING_FOREST`, whose forest crosses the tiles' seams
   bool exact = true;
@@ -271,6 +272,7 @@ inline Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size
       result.first = own_range.first;
       result.last = own_range.second;
       result.seam_duplicates = read.merged_into_earlier_tiles(tile);
+      result.input_points = read.tile_starts[tile + 1] - read.tile_starts[tile];
       result.halo_width = width;
       result.exact = o.orientation != Normal_orientation::SPANNING_FOREST || !result.points.normals_estimated;
       return result;
