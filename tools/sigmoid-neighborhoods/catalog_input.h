@@ -158,7 +158,7 @@ inline Input_points read_input_points(const Arguments& args, const std::string& 
   in.first = in.halo.first;
   in.last = in.halo.last;
   in.halo_points = in.model.points.size() - (in.last - in.first);
-  if(in.model.points.size() < std::size_t(k) + 1)
+  if(in.first < in.last && in.model.points.size() < std::size_t(k) + 1)
     throw Usage_error(source + ": needs at least " + std::to_string(k + 1) + " distinct points, got " +
                       std::to_string(in.model.points.size()));
   return in;

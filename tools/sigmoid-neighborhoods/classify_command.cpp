@@ -506,6 +506,9 @@ int run_predict(int argc, char** argv)
   // the normals' neighbor rows kept for the features; a tile's halo holds them and the height cells
   Input_points in = read_input_points(args, "classify predict", largest_neighborhood(settings.features),
                                       settings.normals, cell_halo(settings.features), 1);
+  if(in.is_tile && in.first == in.last)
+    throw Usage_error(in.source + ": tile " + in.tile_name + " has no point of its own (empty, or all on an earlier "
+                      "tile's seam): nothing to predict");
   Featured_file file;
   file.path = in.source;
   file.model = std::move(in.model);

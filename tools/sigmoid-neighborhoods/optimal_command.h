@@ -242,7 +242,9 @@ inline int run_optimal(int argc, char** argv)
   timer.start();
   const Input_points in = read_input_points(args, "optimal", options.k_max, normal_options);
   const SN::Oriented_point_set& model = in.model;
-  const auto records = optimal_search(model, options);
+  // a tile without points of its own (empty, or all on an earlier tile's seam) has no rows
+  const auto records =
+    in.first < in.last ? optimal_search(model, options) : std::vector<SN::Optimal_sigmoid_neighborhood>();
   std::size_t failures = 0;
   for(std::size_t i = in.first; i < in.last; ++i)
     failures += records[i].is_failure();

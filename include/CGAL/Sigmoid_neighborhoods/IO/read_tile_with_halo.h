@@ -44,7 +44,7 @@ struct Tile_with_halo
   /// `Normal_orientation::SPANNING_FOREST`, whose forest crosses the tiles' seams
   bool exact = true;
 
-  /// the number of the tile's own points
+  /// the number of the tile's own points; without any, `points` is empty
   std::size_t size() const { return last - first; }
 };
 
@@ -235,6 +235,13 @@ inline Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size
     const CGAL::Bbox_2 region = internal::widened(own.extent, width);
     // the rows first: a halo too narrow is seen on them, before any normal is estimated
     internal::Catalog_points read = internal::read_catalog_points(catalog, &region);
+    if(read.range_of(tile).first == read.range_of(tile).second)
+    {
+      // no point of its own (an empty file, or one of seam duplicates): nothing to compute, no halo
+      result.seam_duplicates = read.merged_into_earlier_tiles(tile);
+      result.input_points = read.tile_starts[tile + 1] - read.tile_starts[tile];
+      return result;
+    }
     const bool estimated = internal::estimates_normals(read, o);
     internal::compute_catalog_rows(read, o);
     const auto own_range = read.range_of(tile);
