@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -314,4 +315,39 @@ TEST_CASE("Tile catalog: refusals", "[catalog]")
     CHECK_THROWS_WITH(SN::read_tile_with_halo(bad, 0, 20, SN::Normal_options()),
                       Catch::Contains("lies outside the tile's extent in the catalog (the header's bounding box is wrong)"));
   }
+}
+
+TEST_CASE("Tile catalog: duplicates within and across tiles, a tile of seam duplicates alone", "[catalog]")
+{
+  const std::string dir = catalog_scratch("seams");
+  // a: a 3 x 3 grid with (1, 1, 0) twice and (2, 0, 0) written as (2, -0, 0); b: copies of a's points
+  std::ofstream(dir + "/a.xyz") << "0 0 0\n1 0 0\n2 -0 0\n0 1 0\n1 1 0\n2 1 0.1\n0 2 0\n1 2 0\n2 2 0\n1 1 0\n";
+  std::ofstream(dir + "/b.xyz") << "2 0 0\n2 1 0.1\n";
+  std::ofstream(dir + "/c.xyz") << "3 0 0\n3 1 0.2\n3 2 0\n4 0 0\n4 1 0\n4 2 0.1\n";
+  const SN::Tile_catalog catalog = SN::read_tile_catalog(dir);
+  REQUIRE(catalog.tiles.size() == 3);
+  SN::Normal_options o;
+  o.neighbors = 4;
+  o.orientation = SN::Normal_orientation::UPWARD;
+  const SN::Oriented_point_set all = SN::read_catalog_union(catalog, o);
+  CHECK(all.points.size() == 15); // 9 of a, none of b, 6 of c
+  CHECK(all.merged_duplicates == 3); // a's second (1, 1, 0) and b's two points
+  CHECK(all.input_vertices == 18);
+  CHECK(all.points[2] == SN::Oriented_point_set::Point_3(2, 0, 0));
+  CHECK(std::signbit(all.points[2].y())); // the first of (2, -0, 0) and (2, 0, 0) kept, as written
+  CHECK(all.points[9] == SN::Oriented_point_set::Point_3(3, 0, 0));    // c after a, in file order
+
+  const SN::Tile_with_halo b = SN::read_tile_with_halo(catalog, 1, 4, o);
+  CHECK(b.size() == 0);
+  CHECK(b.points.points.empty());
+  CHECK(b.seam_duplicates == 2);
+  CHECK(b.input_points == 2);
+  const SN::Tile_with_halo c = SN::read_tile_with_halo(catalog, 2, 4, o);
+  CHECK(c.size() == 6);
+  CHECK(c.input_points == 6);
+  CHECK(SN::read_tile_with_halo(catalog, 0, 4, o).input_points == 10);
+  CHECK(c.seam_duplicates == 0);
+  REQUIRE(c.points.points.size() >= c.last);
+  for(std::size_t i = c.first; i < c.last; ++i)
+    CHECK(c.points.points[i] == all.points[9 + i - c.first]);
 }

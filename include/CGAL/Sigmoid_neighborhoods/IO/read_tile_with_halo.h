@@ -239,7 +239,7 @@ inline Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size
     {
       // no point of its own (an empty file, or one of seam duplicates): nothing to compute, no halo
       result.seam_duplicates = read.merged_into_earlier_tiles(tile);
-      result.input_points = read.tile_starts[tile + 1] - read.tile_starts[tile];
+      result.input_points = read.input_points_of(tile);
       return result;
     }
     const bool estimated = internal::estimates_normals(read, o);
@@ -279,7 +279,7 @@ inline Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size
       result.first = own_range.first;
       result.last = own_range.second;
       result.seam_duplicates = read.merged_into_earlier_tiles(tile);
-      result.input_points = read.tile_starts[tile + 1] - read.tile_starts[tile];
+      result.input_points = read.input_points_of(tile);
       result.halo_width = width;
       result.exact = o.orientation != Normal_orientation::SPANNING_FOREST || !result.points.normals_estimated;
       return result;

@@ -56,6 +56,7 @@ struct Catalog_points
   Oriented_point_set set;
   bool has_normals = false;
   std::vector<std::size_t> tile_starts; // per tile, then one more: its first point before the merge
+  std::vector<std::size_t> merged_in_files; // per tile read whole: merged by the file's reader (PLY, XYZ)
   Merged_positions merged;
 
   // The tile's points after the merge (its points that no earlier tile has): [first, second).
@@ -65,6 +66,12 @@ struct Catalog_points
       return std::size_t(std::lower_bound(merged.first.begin(), merged.first.end(), start) - merged.first.begin());
     };
     return {at(tile_starts[tile]), at(tile_starts[tile + 1])};
+  }
+
+  // The points of the tile's file, with those its reader merged.
+  std::size_t input_points_of(std::size_t tile) const
+  {
+    return tile_starts[tile + 1] - tile_starts[tile] + merged_in_files[tile];
   }
 
   // The tile's points merged into a point of an earlier tile.
@@ -113,6 +120,9 @@ inline void append_tile_points(const Catalog_tile& tile, const CGAL::Bbox_2* reg
     {
       Oriented_point_set file = read_oriented_point_set(tile.path, 0); // the file's normals, if any
       has_normals = !file.normals.empty();
+      if(region == nullptr || (region->xmin() <= tile.extent.xmin() && tile.extent.xmax() <= region->xmax() &&
+                               region->ymin() <= tile.extent.ymin() && tile.extent.ymax() <= region->ymax()))
+        out.merged_in_files.back() = file.merged_duplicates; // the whole file is read: its count is the read part's
       for(std::size_t i = 0; i < file.points.size(); ++i)
       {
         const auto& p = file.points[i];
@@ -148,6 +158,7 @@ inline Catalog_points read_catalog_points(const Tile_catalog& catalog, const CGA
   for(const Catalog_tile& tile : catalog.tiles)
   {
     out.tile_starts.push_back(out.set.points.size());
+    out.merged_in_files.push_back(0);
     if(region == nullptr || do_meet(tile.extent, *region))
     {
       append_tile_points(tile, region, out, first);
@@ -157,6 +168,11 @@ inline Catalog_points read_catalog_points(const Tile_catalog& catalog, const CGA
   out.tile_starts.push_back(out.set.points.size());
   out.set.input_vertices = out.set.points.size();
   out.merged = merge_duplicate_points(out.set, out.has_normals);
+  for(std::size_t merged : out.merged_in_files)
+  {
+    out.set.merged_duplicates += merged;
+    out.set.input_vertices += merged;
+  }
   return out;
 }
 
