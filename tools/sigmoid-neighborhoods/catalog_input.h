@@ -75,7 +75,10 @@ inline std::string catalog_fingerprint(const SN::Tile_catalog& catalog)
   std::string text;
   for(const SN::Catalog_tile& t : catalog.tiles)
     text += t.name + ':' + std::to_string(t.points) + ';';
-  return std::to_string(std::hash<std::string>()(text));
+  std::uint64_t hash = 14695981039346656037ull; // FNV-1a: the same on every machine and build
+  for(unsigned char c : text)
+    hash = (hash ^ c) * 1099511628211ull;
+  return std::to_string(hash);
 }
 
 inline SN::Tile_catalog read_catalog_argument(const std::string& source)
