@@ -68,16 +68,26 @@ namespace internal {
 constexpr unsigned int MAXIMUM_HALO_READINGS = 64;
 
 // What no halo has read: the catalog's tiles that reach beyond `region`. For a point in `region`,
-// margin() bounds from below its distance to every point of the catalog outside `region`.
+// margin() bounds from below its distance to every point of the catalog outside `region`, or says
+// it exceeds `reach`: the tiles farther than `reach` from `region` are left out (a survey of
+// thousands of tiles has a few near any tile).
 class Unread_space
 {
 public:
-  Unread_space(const Tile_catalog& catalog, const CGAL::Bbox_2& region) : m_region(region)
+  Unread_space(const Tile_catalog& catalog, const CGAL::Bbox_2& region,
+               double reach = std::numeric_limits<double>::infinity())
+    : m_region(region)
   {
     for(const Catalog_tile& t : catalog.tiles)
-      if(t.points > 0 && !(t.extent.xmin() >= region.xmin() && t.extent.xmax() <= region.xmax() &&
-                           t.extent.ymin() >= region.ymin() && t.extent.ymax() <= region.ymax()))
-        m_beyond.push_back(t.extent);
+    {
+      const CGAL::Bbox_2& b = t.extent;
+      const double dx = (std::max)({b.xmin() - region.xmax(), 0., region.xmin() - b.xmax()});
+      const double dy = (std::max)({b.ymin() - region.ymax(), 0., region.ymin() - b.ymax()});
+      if(t.points > 0 && !(b.xmin() >= region.xmin() && b.xmax() <= region.xmax() && b.ymin() >= region.ymin() &&
+                           b.ymax() <= region.ymax()) &&
+         !(std::sqrt(dx * dx + dy * dy) > reach))
+        m_beyond.push_back(b);
+    }
   }
 
   bool empty() const { return m_beyond.empty(); }
@@ -136,18 +146,27 @@ inline double shortfall(double distance, double margin, double x, double y)
 // The most a point of `needed` lacks to see its `k`-th neighbor among the read points (0: every one
 // sees it, so its row is the union's); infinity when a row is short while some points are unread.
 inline double largest_shortfall(const Oriented_point_set& s, const std::vector<std::size_t>& needed, unsigned int k,
-                                const Unread_space& unread)
+                                const Tile_catalog& catalog, const CGAL::Bbox_2& region)
 {
-  double largest = 0.;
-  for(std::size_t i : needed)
+  std::vector<double> distances(needed.size());
+  double farthest = 0.;
+  for(std::size_t n = 0; n < needed.size(); ++n)
   {
-    const std::size_t row = s.neighbor_offsets[i + 1] - s.neighbor_offsets[i];
-    if(row < k)
+    const std::size_t i = needed[n];
+    if(s.neighbor_offsets[i + 1] - s.neighbor_offsets[i] < k)
       return std::numeric_limits<double>::infinity();
+    distances[n] = std::sqrt(
+      CGAL::squared_distance(s.points[i], s.points[s.neighbor_indices[s.neighbor_offsets[i] + k - 1]]));
     const auto& p = s.points[i];
-    const auto& q = s.points[s.neighbor_indices[s.neighbor_offsets[i] + k - 1]];
-    const double distance = std::sqrt(CGAL::squared_distance(p, q));
-    largest = (std::max)(largest, shortfall(distance, unread.margin(p.x(), p.y()), p.x(), p.y()));
+    farthest = (std::max)(farthest, shortfall(distances[n], 0., p.x(), p.y())); // the reach it needs
+  }
+  // a tile farther from the region than every distance and its slack cannot hold a nearer point
+  const Unread_space unread(catalog, region, farthest * (1. + 1e-6) + 1e-6);
+  double largest = 0.;
+  for(std::size_t n = 0; n < needed.size(); ++n)
+  {
+    const auto& p = s.points[needed[n]];
+    largest = (std::max)(largest, shortfall(distances[n], unread.margin(p.x(), p.y()), p.x(), p.y()));
   }
   return largest;
 }
@@ -255,7 +274,7 @@ inline Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size
       std::vector<std::size_t> needed;
       for(std::size_t i = own_range.first; i < own_range.second; ++i)
         needed.push_back(i);
-      largest = internal::largest_shortfall(s, needed, k, unread);
+      largest = internal::largest_shortfall(s, needed, k, catalog, region);
       if(estimated && largest <= 0.)
       {
         std::vector<char> is_needed(s.points.size(), 0);
@@ -269,7 +288,7 @@ inline Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size
         for(std::size_t i = 0; i < s.points.size(); ++i)
           if(is_needed[i])
             needed.push_back(i);
-        largest = internal::largest_shortfall(s, needed, o.neighbors, unread);
+        largest = internal::largest_shortfall(s, needed, o.neighbors, catalog, region);
       }
     }
     if(largest <= 0.)
