@@ -64,7 +64,7 @@ cat "$dir/tiles/t_0_0.xyz" "$dir/tiles/t_0_1.xyz" "$dir/tiles/t_1_0.xyz" "$dir/t
 "$tool" evaluate "$dir/union.xyz" -o "$dir/evaluated_union" --per-point --orientation up $options 2> "$dir/evaluate.txt" \
   || fail "evaluate union: $(cat "$dir/evaluate.txt")"
 for t in t_0_0 t_0_1 t_1_0 t_1_1; do tail -n +2 "$dir/evaluated/models/$t.csv"; done > "$dir/evaluated_tiles.csv"
-tail -n +2 "$dir/evaluated_union/models/union.csv" | cmp - "$dir/evaluated_tiles.csv" \
+tail -n +2 "$dir/evaluated_union/models/union.xyz.csv" | cmp - "$dir/evaluated_tiles.csv" \
   || fail "evaluate --catalog: the tiles' per-point rows differ from the union's"
 grep -q '"points": 6561' "$dir/evaluated/summary.json" || fail "evaluate --catalog summary: $(head -c 600 "$dir/evaluated/summary.json")"
 "$tool" report "$dir/evaluated" -o "$dir/report" > /dev/null 2>&1 || fail "report of evaluate --catalog"
