@@ -14,14 +14,7 @@ stand_ins=$2
 recipes=$3
 dir=catalog-test
 rm -rf "$dir" && mkdir -p "$dir/tiles"
-fail() { echo "FAILED: $*"; exit 1; }
-expect_refusal() { # expected message piece, then the command
-  piece=$1; shift
-  set +e; "$@" > "$dir/out.txt" 2> "$dir/err.txt"; code=$?; set -e
-  [ "$code" -eq 2 ] || fail "exit $code, not 2: $* ($(cat "$dir/err.txt"))"
-  grep -q -- "$piece" "$dir/err.txt" || fail "no '$piece' in: $(cat "$dir/err.txt")"
-  [ "$(wc -l < "$dir/err.txt")" -eq 1 ] || fail "more than one line: $(cat "$dir/err.txt")"
-}
+. "$(dirname "$0")/refusals.sh"
 
 # 2 x 2 tiles of 20 x 20 m, a point every 0.5 m with a wavy ground and a roof; seams in both tiles
 for tx in 0 1; do for ty in 0 1; do

@@ -13,14 +13,7 @@ labeled=$2
 python=$3
 dir=classify-catalog-test
 rm -rf "$dir" && mkdir -p "$dir/tiles"
-fail() { echo "FAILED: $*"; exit 1; }
-expect_refusal() { # expected message piece, then the command
-  piece=$1; shift
-  set +e; "$@" > "$dir/out.txt" 2> "$dir/err.txt"; code=$?; set -e
-  [ "$code" -eq 2 ] || fail "exit $code, not 2: $* ($(cat "$dir/err.txt"))"
-  grep -q -- "$piece" "$dir/err.txt" || fail "no '$piece' in: $(cat "$dir/err.txt")"
-  [ "$(wc -l < "$dir/err.txt")" -eq 1 ] || fail "more than one line: $(cat "$dir/err.txt")"
-}
+. "$(dirname "$0")/refusals.sh"
 start=$(date +%s)
 
 # the package's fixed and optimal neighborhoods (k 20, normals' sigmoid weights) and the heights in cells

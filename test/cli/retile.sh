@@ -14,14 +14,7 @@ python=$3
 checker=$4
 dir=retile-test
 rm -rf "$dir" && mkdir -p "$dir"
-fail() { echo "FAILED: $*"; exit 1; }
-expect_refusal() { # expected message piece, then the command
-  piece=$1; shift
-  set +e; "$@" > "$dir/out.txt" 2> "$dir/err.txt"; code=$?; set -e
-  [ "$code" -eq 2 ] || fail "exit $code, not 2: $* ($(cat "$dir/err.txt"))"
-  grep -q -- "$piece" "$dir/err.txt" || fail "no '$piece' in: $(cat "$dir/err.txt")"
-  [ "$(wc -l < "$dir/err.txt")" -eq 1 ] || fail "not one line: $(cat "$dir/err.txt")"
-}
+. "$(dirname "$0")/refusals.sh"
 tiles_in() { find "$1" -name '*.las' | wc -l; }
 points=$("$python" -c "import struct,sys; d=open(sys.argv[1],'rb').read(375); print(struct.unpack_from('<Q',d,247)[0])" "$input")
 
