@@ -110,7 +110,8 @@ Union_records union_records(const SN::Tile_catalog& catalog, const SN::Normal_op
 // Every tile with its halo against the union: the same points, in the same order, with the same
 // normals, labels and records, bit for bit. Returns the tiles' halo widths.
 std::vector<double> check_tiles_equal_union(const SN::Tile_catalog& catalog, const SN::Normal_options& normals,
-                                            unsigned int k_max, const Union_records& u)
+                                            unsigned int k_max, const Union_records& u,
+                                            const SN::Halo_options& halo = SN::Halo_options())
 {
   const SN::Oriented_point_set& all = u.points;
   const auto& all_records = u.records;
@@ -119,8 +120,10 @@ std::vector<double> check_tiles_equal_union(const SN::Tile_catalog& catalog, con
   for(std::size_t t = 0; t < catalog.tiles.size(); ++t)
   {
     INFO("tile " << catalog.tiles[t].name);
-    const SN::Tile_with_halo tile = SN::read_tile_with_halo(catalog, t, k_max, normals);
+    const SN::Tile_with_halo tile = SN::read_tile_with_halo(catalog, t, k_max, normals, halo);
     CHECK(tile.exact);
+    CHECK(tile.readings >= 1);
+    CHECK(tile.readings <= 2); // a halo too narrow bounds one that holds
     widths.push_back(tile.halo_width);
     const auto records = optimal_records(tile.points, k_max);
     std::size_t differing = 0;
@@ -206,13 +209,19 @@ TEST_CASE("Tile catalog: tiles with halos equal the union on a grid of ties and 
   }
   SECTION("the narrowest and the first halo are honoured; a small first halo grows")
   {
+    // every tile read twice: the second halo, bounded from the first one's rows, holds
+    SN::Halo_options tiny;
+    tiny.initial_width = 0.01;
+    SN::Normal_options jet = up;
+    jet.source = SN::Normal_source::JET;
+    check_tiles_equal_union(catalog, jet, 20, union_records(catalog, jet, 20), tiny);
     SN::Halo_options wide;
     wide.minimum_width = 15.;
     CHECK(SN::read_tile_with_halo(catalog, 2, 20, up, wide).halo_width >= 15.);
     SN::Halo_options narrow;
     narrow.initial_width = 0.01;
     const SN::Tile_with_halo grown = SN::read_tile_with_halo(catalog, 2, 20, up, narrow);
-    CHECK(grown.readings > 1);
+    CHECK(grown.readings == 2);
     CHECK(grown.halo_width > 0.01);
   }
 }

@@ -34,7 +34,8 @@ inline const char* CATALOG_USAGE =
   "      every neighborhood, so that its rows are those of the union, bit for bit (orientation mst\n"
   "      excepted); writes OUT's rows and, next to it, OUT without extension + .tile.json for\n"
   "      'catalog merge'; without --tile, the union in one run; --halo WIDTH: the first halo (default:\n"
-  "      from the tile's density; it grows until it holds every neighborhood); estimated normals are\n"
+  "      from the tile's density; when it does not hold every neighborhood, a second one computed from\n"
+  "      its rows does); estimated normals are\n"
   "      oriented upwards (--orientation up) unless --orientation or --viewpoint says otherwise\n";
 
 inline std::vector<std::string> with_catalog_options(std::vector<std::string> valued)

@@ -54,8 +54,8 @@ struct Tile_with_halo
 */
 struct Halo_options
 {
-  /// the first halo (0: where the `k` neighbors of evenly spread points would reach, from the tile's
-  /// density); it grows until it holds every neighborhood
+  /// the first halo (0: four times where the neighbors of evenly spread points would reach, from
+  /// the tile's density); when it does not hold every neighborhood, the next is computed from its rows
   double initial_width = 0.;
   /// the halo is never narrower: what a computation needs beyond neighborhoods, e.g. the side of the
   /// cells of `compute_height_features()`, whose cells then lie in the tile and its halo
@@ -126,13 +126,23 @@ inline CGAL::Bbox_2 widened(const CGAL::Bbox_2& b, double width)
 }
 
 // How far the `k` nearest neighbors of a tile's point reach if its points spread evenly over its
-// extent: the first halo, before the neighborhoods say how far they reach.
-inline double first_halo_width(const Catalog_tile& tile, unsigned int k)
+// extent.
+inline double even_reach(const Catalog_tile& tile, unsigned int k)
 {
   const double area = (tile.extent.xmax() - tile.extent.xmin()) * (tile.extent.ymax() - tile.extent.ymin());
   if(!(area > 0.) || tile.points == 0)
     return 1.;
   return std::sqrt(double(k) * area / (3.14159265358979323846 * double(tile.points)));
+}
+
+// The first halo, before any neighborhood says how far it reaches: four times what evenly spread
+// points would need (see sufficient_halo_width()), as densities vary (roofs, canopy and ground of
+// a survey), so that most tiles are read once. Every reading costs about as much as the first (the
+// neighbor tiles are streamed whole, every row is computed), while a wider halo adds few points.
+inline double first_halo_width(const Catalog_tile& tile, unsigned int k, unsigned int estimation_neighbors)
+{
+  const double reach = even_reach(tile, k);
+  return 4. * (estimation_neighbors == 0 ? reach : 2. * reach + even_reach(tile, estimation_neighbors));
 }
 
 // How much farther than `margin` the point at (x, y) needs to see to see its neighbor at
@@ -171,6 +181,49 @@ inline double largest_shortfall(const Oriented_point_set& s, const std::vector<s
   return largest;
 }
 
+// A halo that holds the neighborhoods, from the rows of a narrower one. Points added to a read set
+// only bring neighbors nearer, so the distances read bound the union's from above: the union's `k`
+// neighbors of a tile's point p lie within d_k(p) of it, and (when normals are estimated on `n`
+// neighbors) the `n` neighbors of each of them within |pq| + d_n(q) of p, or, for a neighbor q not
+// read yet, within d_k(p) + d_n(p) (the ball of radius d_n(p) around p holds n points besides q). A
+// halo that holds that ball around every point of the tile passes the check of the next reading.
+// Infinity when a row is short (too few points read to bound anything).
+inline double sufficient_halo_width(const Oriented_point_set& s, std::pair<std::size_t, std::size_t> own,
+                                    unsigned int k, unsigned int estimation_neighbors, const CGAL::Bbox_2& extent)
+{
+  const auto reach = [&](std::size_t i, unsigned int m) {
+    if(s.neighbor_offsets[i + 1] - s.neighbor_offsets[i] < m)
+      return std::numeric_limits<double>::infinity();
+    return std::sqrt(
+      CGAL::squared_distance(s.points[i], s.points[s.neighbor_indices[s.neighbor_offsets[i] + m - 1]]));
+  };
+  double width = 0.;
+  for(std::size_t i = own.first; i < own.second; ++i)
+  {
+    const double d_k = reach(i, k);
+    double needed = d_k;
+    if(estimation_neighbors > 0)
+    {
+      needed = d_k + reach(i, estimation_neighbors);
+      for(std::size_t r = s.neighbor_offsets[i]; std::isfinite(needed) && r < s.neighbor_offsets[i] + k; ++r)
+      {
+        const std::size_t q = s.neighbor_indices[r];
+        needed = (std::max)(needed, std::sqrt(CGAL::squared_distance(s.points[i], s.points[q])) +
+                                      reach(q, estimation_neighbors));
+      }
+    }
+    if(!std::isfinite(needed))
+      return needed;
+    const auto& p = s.points[i];
+    const double inside = (std::min)({p.x() - extent.xmin(), extent.xmax() - p.x(), p.y() - extent.ymin(),
+                                      extent.ymax() - p.y()});
+    // twice the check's slack, so that rounding cannot fail it again
+    width = (std::max)(width, shortfall(needed * (1. + 1e-9), (std::max)(inside, 0.), p.x(), p.y()) +
+                                1e-9 * (needed + std::abs(p.x()) + std::abs(p.y())));
+  }
+  return width;
+}
+
 } // namespace internal
 /// \endcond
 
@@ -200,8 +253,10 @@ inline Oriented_point_set read_catalog_union(const Tile_catalog& catalog, const 
   computed on `read_catalog_union()`.
 
   The halo is every point of the catalog within `halo_width` of the tile's extent in `x` and `y`.
-  It starts at `halo.initial_width` (0: from the tile's density, where `k` neighbors of evenly spread
-  points would reach), at least `halo.minimum_width`, and grows until it provably holds:
+  It starts at `halo.initial_width` (0: from the tile's density, four times where the neighbors of
+  evenly spread points would reach), at least `halo.minimum_width`, and grows until it provably holds
+  (the next halo computed from the rows of one too narrow holds, so a tile is read at most twice
+  unless it has fewer points than `k`):
   - the `k` nearest neighbors, in the union, of every point of the tile: the `k`-th one found is
     nearer than any point outside the halo can be (the tiles' extents bound where those are);
   - when normals are estimated, the `options.neighbors` nearest neighbors of those points too, so that
@@ -245,9 +300,9 @@ inline Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size
   if(!(halo.initial_width >= 0. && halo.minimum_width >= 0. && std::isfinite(halo.initial_width) &&
        std::isfinite(halo.minimum_width)))
     throw std::invalid_argument("read_tile_with_halo: halo widths must be finite and at least 0");
+  const bool may_estimate = o.source != Normal_source::FROM_FILE;
   double width = halo.initial_width > 0. ? halo.initial_width
-                                         : 1.5 * (internal::first_halo_width(own, k) +
-                                                  internal::first_halo_width(own, o.neighbors));
+                                         : internal::first_halo_width(own, k, may_estimate ? o.neighbors : 0);
   width = (std::max)(width, halo.minimum_width);
   for(result.readings = 1;; ++result.readings)
   {
@@ -305,7 +360,11 @@ inline Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size
     }
     if(result.readings == internal::MAXIMUM_HALO_READINGS)
       throw Input_error(own.path + ": no halo up to " + std::to_string(width) + " holds the neighborhoods of the tile");
-    width += std::isfinite(largest) ? (std::max)(1.5 * largest, 0.5 * width) : width;
+    const double sufficient =
+      std::isfinite(largest)
+        ? internal::sufficient_halo_width(s, own_range, k, estimated ? o.neighbors : 0, own.extent)
+        : largest;
+    width = std::isfinite(sufficient) ? (std::max)(sufficient, width + largest) : 2. * width;
   }
 }
 
