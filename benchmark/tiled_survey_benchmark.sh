@@ -4,9 +4,9 @@
 #
 # The tiled pipeline at survey scale: a synthetic airborne survey (generate_survey, written once),
 # every tile computed with its halo by 'optimal --catalog SURVEY --tile NAME', J jobs of T threads
-# at a time under GNU parallel, each job's wall time and peak resident size recorded; then one tile
-# computed alone in memory, for the cost of the halo. Resumable: a tile whose NAME.tile.json (written
-# last) is in the output folder is not computed again.
+# at a time under GNU parallel, each job's wall time and peak resident size recorded; then J tiles
+# computed alone in memory, J at once, for the cost of the halo. Resumable: a tile whose
+# NAME.tile.json (written last) is in the output folder is not computed again.
 #
 # usage: benchmark/tiled_survey_benchmark.sh [--points N] [--tile-size S] [--jobs J] [--threads T]
 #          [--a-grid ANGLES] [--b-grid ANGLES] [--halo WIDTH] [--seed SEED] [--work DIR] [--discard-csv]
@@ -21,7 +21,7 @@
 #       for surveys whose CSVs would not fit on the disk (about 255 bytes per point)
 # The table: wall time of this run and per point; the jobs' wall and CPU (user + system) time per
 # point, which other load on the machine does not inflate; the largest peak resident size of a job;
-# and the same for the middle tile of the catalog computed alone, in memory.
+# and the same for J middle tiles of the catalog computed alone, in memory, J at once (the same load).
 # Environment: SIGMOID_NEIGHBORHOODS and GENERATE_SURVEY, the programs (default: the build folder
 # next to this script).
 set -euo pipefail
@@ -133,15 +133,31 @@ while IFS=, read -r name _; do
 done < "$work/catalog.csv"
 csv_bytes=$(find "$out" -name '*.csv' -printf '%s\n' | awk '{ s += $1 } END { print s + 0 }')
 
-# One tile alone, in memory: the middle one of the catalog.
-middle=$(sed -n "$(( (tiles + 1) / 2 ))p" "$work/catalog.csv")
-middle_name=$(echo "$middle" | cut -d, -f1)
-middle_points=$(echo "$middle" | cut -d, -f2)
-middle_path=$(echo "$middle" | cut -d, -f7-)
-measure "$work/single.time" "$work/single.log" "$tool" optimal "$middle_path" -o "$work/single.csv" --orientation up \
-  --threads "$threads" "${grid[@]+"${grid[@]}"}"
-read -r single_seconds single_cpu single_kb < <(read_time "$work/single.time")
-rm -f "$work/single.csv"
+# Tiles alone, in memory, J of them at once as the tile jobs ran (the same load on the machine):
+# the middle ones of the catalog.
+first=$(( (tiles + 1) / 2 ))
+sed -n "${first},$((first + jobs - 1))p" "$work/catalog.csv" > "$work/alone.csv"
+run_alone() {
+  local name=$1 path=$2
+  measure "$work/alone_$name.time" "$work/alone_$name.log" "$tool" optimal "$path" -o "$work/alone_$name.csv" \
+    --orientation up --threads "$threads" "${grid[@]+"${grid[@]}"}"
+  rm -f "$work/alone_$name.csv"
+}
+export -f run_alone
+export work
+awk -F, '{ print $1; path = $7; for(i = 8; i <= NF; ++i) path = path "," $i; print path }' "$work/alone.csv" |
+  parallel -j "$jobs" -N 2 --halt now,fail=1 'grid=($grid_text); run_alone {1} {2}' ||
+  { echo "tiled_survey_benchmark.sh: a tile alone failed: see $work/alone_NAME.log" >&2; exit 1; }
+alone_names= alone_points=0 alone_seconds=0 alone_cpu=0 alone_kb=0
+while IFS=, read -r name count _; do
+  read -r seconds cpu kb < <(read_time "$work/alone_$name.time")
+  alone_names="$alone_names${alone_names:+ }$name"
+  alone_points=$((alone_points + count))
+  alone_seconds=$(add "$alone_seconds" "$seconds")
+  alone_cpu=$(add "$alone_cpu" "$cpu")
+  [ "$kb" -le "$alone_kb" ] || alone_kb=$kb
+done < "$work/alone.csv"
+alone_tiles=$(wc -l < "$work/alone.csv")
 
 per_point() { awk -v s="$1" -v n="$2" 'BEGIN { if(s > 0) printf "%.2f", 1e6 * s / n; else printf "n/a" }'; } # us
 {
@@ -152,9 +168,9 @@ per_point() { awk -v s="$1" -v n="$2" 'BEGIN { if(s > 0) printf "%.2f", 1e6 * s 
     "$([ "$done_before" -eq 0 ] || echo " (resumed: $done_before tiles from earlier runs)")" "$tiles" "$survey_points" \
     "$jobs" "$threads" "$wall" "$(per_point "$wall" "$survey_points")" "$(per_point "$job_seconds" "$survey_points")" \
     "$(per_point "$cpu_seconds" "$survey_points")" $((peak_kb / 1024)) "$peak_tile"
-  printf '| one tile in memory: %s | 1 | %d | 1 x %d | %.1f | %s | %s | %s | %d |\n' "$middle_name" "$middle_points" \
-    "$threads" "$single_seconds" "$(per_point "$single_seconds" "$middle_points")" \
-    "$(per_point "$single_seconds" "$middle_points")" "$(per_point "$single_cpu" "$middle_points")" $((single_kb / 1024))
+  printf '| tiles alone, in memory: %s | %d | %d | %d x %d | | | %s | %s | %d |\n' "$alone_names" "$alone_tiles" \
+    "$alone_points" "$jobs" "$threads" "$(per_point "$alone_seconds" "$alone_points")" \
+    "$(per_point "$alone_cpu" "$alone_points")" $((alone_kb / 1024))
   echo
   echo "survey files: $survey_bytes bytes; CSV outputs kept: ${csv_bytes:-0} bytes in $out"
 } | tee -a "$work/results.md"
