@@ -13,8 +13,8 @@
 #   --points: about N points (default 2e6); --tile-size: S metres (default 180): the survey has m x m
 #       tiles, m the nearest to sqrt(N / 15) / S (see generate_survey --help)
 #   --jobs, --threads: J jobs at once (default 2), T threads each (default 1)
-#   --a-grid, --b-grid, --halo: passed to optimal (--halo to the tiles' jobs alone: a first halo wide
-#       enough saves its growth, one reading of the neighbors instead of several)
+#   --a-grid, --b-grid, --halo: passed to optimal (--halo to the tiles' jobs alone: the first halo,
+#       instead of the one from the tile's density; one too narrow costs a second reading)
 #   --work: the folder of the survey and the outputs (default survey-benchmark); the survey is
 #       WORK/survey_N_S_SEED, generated when absent; the outputs WORK/optimal_N_S_SEED_TAG
 #   --discard-csv: removes each tile's CSV once its job is done (its .tile.json, .log and .time kept):

@@ -23,12 +23,15 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -680,6 +683,47 @@ TEST_CASE("IO: point sets in XYZ, PWN, PLY and OFF without faces", "[io]")
   CHECK(dup.points[2] == Point_3(2, 0, 0));
   CHECK(dup.normals[0] == Vector_3(0, 0, 1));
   CHECK(dup.normals[1] == Vector_3(0, 0, 1));
+}
+
+TEST_CASE("IO: duplicates merged into the first, as a search tree of positions merges them", "[io]")
+{
+  // 20,000 points on a lattice of 8 x 8 x 8 positions (most of them repeated, -0 among them), each
+  // with its own normal: the reader keeps the first point of each position, in input order, with
+  // its normal, as a map from position to first point does.
+  std::mt19937 random(5);
+  std::uniform_int_distribution<int> cell(-4, 3);
+  std::ostringstream text;
+  std::vector<std::array<double, 6>> rows;
+  for(int i = 0; i < 20000; ++i)
+  {
+    const double x = 0.5 * cell(random), y = cell(random) == 0 ? -0. : 0.25 * cell(random), z = 0.125 * cell(random);
+    const std::array<double, 6> row{{x, y, z, 1. + (i % 7), double(i % 11), double(i % 13)}};
+    rows.push_back(row);
+    text << x << ' ' << (std::signbit(y) ? "-0" : std::to_string(y)) << ' ' << z << ' ' << row[3] << ' ' << row[4]
+         << ' ' << row[5] << '\n';
+  }
+  write_text(path("io_many_duplicates.xyz"), text.str());
+  const SN::Oriented_point_set read = SN::read_oriented_point_set(path("io_many_duplicates.xyz"));
+
+  std::map<std::array<double, 3>, std::size_t> first_at; // 0 and -0 are one key: they compare equal
+  std::vector<std::size_t> kept;
+  for(std::size_t i = 0; i < rows.size(); ++i)
+    if(first_at.emplace(std::array<double, 3>{{rows[i][0], rows[i][1], rows[i][2]}}, i).second)
+      kept.push_back(i);
+  CHECK(read.input_vertices == rows.size());
+  CHECK(read.merged_duplicates == rows.size() - kept.size());
+  REQUIRE(read.points.size() == kept.size());
+  std::size_t differing = 0;
+  for(std::size_t j = 0; j < kept.size(); ++j)
+  {
+    const auto& r = rows[kept[j]];
+    const Vector_3 n = Vector_3(r[3], r[4], r[5]) / std::sqrt(r[3] * r[3] + r[4] * r[4] + r[5] * r[5]);
+    differing += !(read.points[j] == Point_3(r[0], r[1], r[2])) || std::signbit(read.points[j].y()) != std::signbit(r[1]) ||
+                 std::abs(read.normals[j].x() - n.x()) > 1e-12 || std::abs(read.normals[j].y() - n.y()) > 1e-12 ||
+                 std::abs(read.normals[j].z() - n.z()) > 1e-12;
+  }
+  CHECK(differing == 0);
+  CHECK(kept.size() < 600); // a lattice of 512 positions
 }
 
 TEST_CASE("IO: the dispatcher's errors", "[io][bad-input]")
