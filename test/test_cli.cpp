@@ -685,7 +685,7 @@ TEST_CASE("IO: point sets in XYZ, PWN, PLY and OFF without faces", "[io]")
   CHECK(dup.normals[1] == Vector_3(0, 0, 1));
 }
 
-TEST_CASE("IO: duplicates merged into the first, as a search tree of positions merges them", "[io]")
+TEST_CASE("IO: duplicates merged into the first as a search tree of positions merges them", "[io]")
 {
   // 20,000 points on a lattice of 8 x 8 x 8 positions (most of them repeated, -0 among them), each
   // with its own normal: the reader keeps the first point of each position, in input order, with
@@ -699,7 +699,7 @@ TEST_CASE("IO: duplicates merged into the first, as a search tree of positions m
     const double x = 0.5 * cell(random), y = cell(random) == 0 ? -0. : 0.25 * cell(random), z = 0.125 * cell(random);
     const std::array<double, 6> row{{x, y, z, 1. + (i % 7), double(i % 11), double(i % 13)}};
     rows.push_back(row);
-    text << x << ' ' << (std::signbit(y) ? "-0" : std::to_string(y)) << ' ' << z << ' ' << row[3] << ' ' << row[4]
+    text << x << ' ' << (y == 0. && std::signbit(y) ? "-0" : std::to_string(y)) << ' ' << z << ' ' << row[3] << ' ' << row[4]
          << ' ' << row[5] << '\n';
   }
   write_text(path("io_many_duplicates.xyz"), text.str());
