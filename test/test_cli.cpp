@@ -699,8 +699,8 @@ TEST_CASE("IO: duplicates merged into the first as a search tree of positions me
     const double x = 0.5 * cell(random), y = cell(random) == 0 ? -0. : 0.25 * cell(random), z = 0.125 * cell(random);
     const std::array<double, 6> row{{x, y, z, 1. + (i % 7), double(i % 11), double(i % 13)}};
     rows.push_back(row);
-    text << x << ' ' << (y == 0. && std::signbit(y) ? "-0" : std::to_string(y)) << ' ' << z << ' ' << row[3] << ' ' << row[4]
-         << ' ' << row[5] << '\n';
+    text << x << ' ' << (y == 0. && std::signbit(y) ? "-0" : std::to_string(y)) << ' ' << z << ' ' << row[3]
+         << ' ' << row[4] << ' ' << row[5] << '\n';
   }
   write_text(path("io_many_duplicates.xyz"), text.str());
   const SN::Oriented_point_set read = SN::read_oriented_point_set(path("io_many_duplicates.xyz"));
@@ -718,7 +718,8 @@ TEST_CASE("IO: duplicates merged into the first as a search tree of positions me
   {
     const auto& r = rows[kept[j]];
     const Vector_3 n = Vector_3(r[3], r[4], r[5]) / std::sqrt(r[3] * r[3] + r[4] * r[4] + r[5] * r[5]);
-    differing += !(read.points[j] == Point_3(r[0], r[1], r[2])) || std::signbit(read.points[j].y()) != std::signbit(r[1]) ||
+    differing += !(read.points[j] == Point_3(r[0], r[1], r[2])) ||
+                 std::signbit(read.points[j].y()) != std::signbit(r[1]) ||
                  std::abs(read.normals[j].x() - n.x()) > 1e-12 || std::abs(read.normals[j].y() - n.y()) > 1e-12 ||
                  std::abs(read.normals[j].z() - n.z()) > 1e-12;
   }
