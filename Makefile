@@ -69,8 +69,9 @@ test: build doc test-deps
 
 # The test suite built with AddressSanitizer and UndefinedBehaviorSanitizer, in its own folder:
 # the library's and the tool's tests, without the examples (built and run by 'make test'), the
-# long end-to-end reruns of code the tests cover (label long: the denoising tables) and the tests
-# that only compile (label compile_only), so that it and 'make test' fit in CI's time.
+# long end-to-end reruns of code the tests cover (label long: the denoising tables, the tiled
+# classification; the tiles' halos on LAS are the Catch2 [catalog] tests') and the tests that only
+# compile (label compile_only), so that it and 'make test' fit in CI's time.
 SANITIZE_DIR ?= build-sanitize
 sanitize: deps
 	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSIGMOID_NEIGHBORHOODS_BUILD_BENCHMARKS=OFF \
