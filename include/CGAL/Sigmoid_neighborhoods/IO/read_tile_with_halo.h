@@ -153,6 +153,14 @@ inline double shortfall(double distance, double margin, double x, double y)
   return distance + slack - margin;
 }
 
+// The distance from point i to its m-th neighbor in its row; infinity when the row is shorter.
+inline double neighbor_distance(const Oriented_point_set& s, std::size_t i, unsigned int m)
+{
+  if(s.neighbor_offsets[i + 1] - s.neighbor_offsets[i] < m)
+    return std::numeric_limits<double>::infinity();
+  return std::sqrt(CGAL::squared_distance(s.points[i], s.points[s.neighbor_indices[s.neighbor_offsets[i] + m - 1]]));
+}
+
 // The most a point of `needed` lacks to see its `k`-th neighbor among the read points (0: every one
 // sees it, so its row is the union's); infinity when a row is short while some points are unread.
 inline double largest_shortfall(const Oriented_point_set& s, const std::vector<std::size_t>& needed, unsigned int k,
@@ -162,12 +170,10 @@ inline double largest_shortfall(const Oriented_point_set& s, const std::vector<s
   double farthest = 0.;
   for(std::size_t n = 0; n < needed.size(); ++n)
   {
-    const std::size_t i = needed[n];
-    if(s.neighbor_offsets[i + 1] - s.neighbor_offsets[i] < k)
-      return std::numeric_limits<double>::infinity();
-    distances[n] = std::sqrt(
-      CGAL::squared_distance(s.points[i], s.points[s.neighbor_indices[s.neighbor_offsets[i] + k - 1]]));
-    const auto& p = s.points[i];
+    distances[n] = neighbor_distance(s, needed[n], k);
+    if(!std::isfinite(distances[n]))
+      return distances[n];
+    const auto& p = s.points[needed[n]];
     farthest = (std::max)(farthest, shortfall(distances[n], 0., p.x(), p.y())); // the reach it needs
   }
   // a tile farther from the region than every distance and its slack cannot hold a nearer point
@@ -191,34 +197,28 @@ inline double largest_shortfall(const Oriented_point_set& s, const std::vector<s
 inline double sufficient_halo_width(const Oriented_point_set& s, std::pair<std::size_t, std::size_t> own,
                                     unsigned int k, unsigned int estimation_neighbors, const CGAL::Bbox_2& extent)
 {
-  const auto reach = [&](std::size_t i, unsigned int m) {
-    if(s.neighbor_offsets[i + 1] - s.neighbor_offsets[i] < m)
-      return std::numeric_limits<double>::infinity();
-    return std::sqrt(
-      CGAL::squared_distance(s.points[i], s.points[s.neighbor_indices[s.neighbor_offsets[i] + m - 1]]));
-  };
   double width = 0.;
   for(std::size_t i = own.first; i < own.second; ++i)
   {
-    const double d_k = reach(i, k);
+    const double d_k = neighbor_distance(s, i, k);
     double needed = d_k;
     if(estimation_neighbors > 0)
     {
-      needed = d_k + reach(i, estimation_neighbors);
+      needed = d_k + neighbor_distance(s, i, estimation_neighbors);
       for(std::size_t r = s.neighbor_offsets[i]; std::isfinite(needed) && r < s.neighbor_offsets[i] + k; ++r)
       {
         const std::size_t q = s.neighbor_indices[r];
         needed = (std::max)(needed, std::sqrt(CGAL::squared_distance(s.points[i], s.points[q])) +
-                                      reach(q, estimation_neighbors));
+                                      neighbor_distance(s, q, estimation_neighbors));
       }
     }
     if(!std::isfinite(needed))
       return needed;
-    const auto& p = s.points[i];
+    const auto& p = s.points[i]; // in the tile's extent: `inside` is at least 0
     const double inside = (std::min)({p.x() - extent.xmin(), extent.xmax() - p.x(), p.y() - extent.ymin(),
                                       extent.ymax() - p.y()});
     // twice the check's slack, so that rounding cannot fail it again
-    width = (std::max)(width, shortfall(needed * (1. + 1e-9), (std::max)(inside, 0.), p.x(), p.y()) +
+    width = (std::max)(width, shortfall(needed * (1. + 1e-9), inside, p.x(), p.y()) +
                                 1e-9 * (needed + std::abs(p.x()) + std::abs(p.y())));
   }
   return width;
