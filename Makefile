@@ -24,7 +24,7 @@ CGAL_DATA_ARCHIVE = /usr/share/doc/libcgal-dev/data.tar.gz
 CORPUS_DIR = $(BUILD_DIR)/cgal-data
 TOOL = $(BUILD_DIR)/tools/sigmoid-neighborhoods/sigmoid-neighborhoods
 
-.PHONY: all deps test-deps configure build doc test sanitize fuzz fuzz-evaluation evaluate corpus denoising classification python clean
+.PHONY: all deps test-deps configure build build-tool doc test sanitize fuzz fuzz-evaluation evaluate corpus denoising classification python clean
 
 all: build
 
@@ -46,6 +46,10 @@ configure: deps
 
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
+
+# Only what the main job runs: the tool (its commands and the readers' library).
+build-tool: configure
+	cmake --build $(BUILD_DIR) --target sigmoid-neighborhoods -j $(JOBS)
 
 # The manual (Doxygen, doc/Sigmoid_neighborhoods/), written to $(BUILD_DIR)/doc/html/. Fails when
 # doxygen reports anything: every warning (an undocumented public name, a broken reference) is an error.
@@ -71,10 +75,13 @@ test: build doc test-deps
 # the library's and the tool's tests, without the examples (built and run by 'make test'), the
 # long end-to-end reruns of code the tests cover (label long: the denoising tables, the tiled
 # classification; the tiles' halos on LAS are the Catch2 [catalog] tests') and the tests that only
-# compile (label compile_only), so that it and 'make test' fit in CI's time.
+# compile (label compile_only), so that it and 'make test' fit in CI's time. -O2 as the release
+# build, and line tables only (-g1): enough for the sanitizers' stack traces, without the full
+# debug information of CGAL's templates, which doubled the build's time.
 SANITIZE_DIR ?= build-sanitize
 sanitize: deps
-	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSIGMOID_NEIGHBORHOODS_BUILD_BENCHMARKS=OFF \
+	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \
+	  -DSIGMOID_NEIGHBORHOODS_BUILD_BENCHMARKS=OFF \
 	  -DSIGMOID_NEIGHBORHOODS_BUILD_PYTHON=OFF -DSIGMOID_NEIGHBORHOODS_BUILD_EXAMPLES=OFF \
 	  -DCMAKE_CXX_FLAGS="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
 	cmake --build $(SANITIZE_DIR) -j $(JOBS)
@@ -131,7 +138,7 @@ corpus: deps
 # The main job: the evaluation of the embedded default corpus, CGAL's meshes as a clean repository
 # and all its point sets as a scanned one (normals estimated where a file has none), then the report
 # with Figure 3 on the fandisk.
-evaluate: build corpus
+evaluate: build-tool corpus
 	@mkdir -p $(RESULTS_DIR)
 	$(TOOL) evaluate $(CORPUS_DIR)/data/meshes -o $(RESULTS_DIR)/clean --repository "CGAL meshes"
 	$(TOOL) evaluate $(CORPUS_DIR)/data/points_3 -o $(RESULTS_DIR)/scanned --repository "CGAL point sets"

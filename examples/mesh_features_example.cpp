@@ -7,7 +7,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
-#include <CGAL/Sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_sigmoid_features.h>
+#include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 
 #include <cmath>
 #include <cstdlib>

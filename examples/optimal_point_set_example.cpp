@@ -6,7 +6,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/read_points.h>
 #include <CGAL/property_map.h>
-#include <CGAL/Sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 
 #include <cstdlib>
 #include <iostream>

@@ -8,7 +8,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO.h>
-#include <CGAL/Sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/Point_set_3.h>
+#include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 
 #include <cstdlib>
 #include <fstream>

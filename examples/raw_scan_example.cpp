@@ -7,7 +7,11 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/read_points.h>
 #include <CGAL/property_map.h>
-#include <CGAL/Sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_k_nearest_neighbors.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/concurrency.h>
+#include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
+#include <CGAL/Sigmoid_neighborhoods/orient_normals.h>
 
 #include <algorithm>
 #include <cstdint>

@@ -24,9 +24,10 @@ ParallelCompile("NPY_NUM_BUILD_JOBS").install()
 
 core = Pybind11Extension(
     "sigmoid_neighborhoods._core",
-    sorted(str(p.relative_to(HERE)) for p in (HERE / "src").glob("*.cpp")),
+    # the module's translation units and the readers, compiled once (CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO)
+    sorted(str(p.relative_to(HERE)) for p in (HERE / "src").glob("*.cpp")) + ["../src/Sigmoid_neighborhoods/IO.cpp"],
     include_dirs=[str(REPOSITORY / "include"), "/usr/include/eigen3"],
-    define_macros=[("NDEBUG", None), ("CGAL_EIGEN3_ENABLED", None), ("SIGMOID_NEIGHBORHOODS_VERSION", f'"{VERSION}"')],
+    define_macros=[("NDEBUG", None), ("CGAL_EIGEN3_ENABLED", None), ("CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO", None), ("SIGMOID_NEIGHBORHOODS_VERSION", f'"{VERSION}"')],
     # the flags of the CMake build (Release): the same code as the C++ library's tests check
     # -frounding-math: CGAL's interval arithmetic (the exact predicates of the readers) needs it, as CGAL's CMake sets
     extra_compile_args=["-O3", "-g0", "-fopenmp", "-frounding-math"],

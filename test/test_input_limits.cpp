@@ -9,6 +9,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_polygon_mesh.h>
+#include <CGAL/Surface_mesh.h>
 
 #include <catch2/catch.hpp>
 

@@ -6,6 +6,7 @@
 // and on the six IGN LiDAR HD tiles of the shared data; without halos, the share of points whose
 // records differ (the border effect); the catalog's refusals.
 
+#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_tile_catalog.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_tile_with_halo.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>

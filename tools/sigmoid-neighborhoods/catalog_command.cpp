@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#include "catalog_command.h"
+#include "commands.h"
 
 #include "catalog_input.h"
 #include "command_line.h"

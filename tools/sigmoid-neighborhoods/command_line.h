@@ -7,6 +7,8 @@
 #ifndef SIGMOID_NEIGHBORHOODS_TOOL_COMMAND_LINE_H
 #define SIGMOID_NEIGHBORHOODS_TOOL_COMMAND_LINE_H
 
+#include "tool_paths.h"
+
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
 #include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
 
@@ -35,12 +37,6 @@
 #include <unistd.h>
 
 extern char** environ;
-
-// Where the plotting scripts are in the source tree (CMake gives it); an installed tool looks in
-// share/sigmoid-neighborhoods next to its bin/ first.
-#ifndef SIGMOID_NEIGHBORHOODS_SCRIPT_DIR
-#define SIGMOID_NEIGHBORHOODS_SCRIPT_DIR "."
-#endif
 
 namespace sigmoid_tool {
 
@@ -383,7 +379,7 @@ inline std::string find_tool_script(const std::string& name)
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if(!ec)
     candidates.push_back(exe.parent_path().parent_path() / "share" / "sigmoid-neighborhoods" / name);
-  candidates.push_back(fs::path(SIGMOID_NEIGHBORHOODS_SCRIPT_DIR) / name);
+  candidates.push_back(fs::path(tool_paths::script_dir()) / name);
   for(const auto& c : candidates)
     if(fs::exists(c, ec))
       return c.string();

@@ -10,6 +10,7 @@
 #include "command_line.h"
 #include "denoise_command.h"
 #include "experiments/denoising_comparison.h"
+#include "tool_paths.h"
 
 #include <filesystem>
 #include <iomanip>
@@ -18,9 +19,6 @@
 #include <string>
 #include <vector>
 
-#ifndef SIGMOID_NEIGHBORHOODS_SHARED_DATA
-#define SIGMOID_NEIGHBORHOODS_SHARED_DATA ""
-#endif
 
 namespace sigmoid_tool {
 
@@ -51,7 +49,7 @@ inline std::vector<std::string> default_cad_models(const std::string& fandisk_fo
     if(!fandisk_folder.empty() && fs::exists(file, ec))
       files.push_back(file.string());
   }
-  const std::string shared = SIGMOID_NEIGHBORHOODS_SHARED_DATA;
+  const std::string shared = tool_paths::shared_data();
   for(const char* name : {"clean/gd_block.obj", "clean/trimesh_ADIS16480.STL", "clean/trimesh_featuretype.STL"})
   {
     const fs::path file = fs::path(shared) / name;
@@ -203,7 +201,7 @@ inline int run_denoise_comparison(int argc, char** argv)
   if(names.empty())
   {
     names = {"cube", "octahedron", "fandisk", "sharp_sphere", "rockerarm", "fertility", "yadav_fandisk"};
-    const std::string cgal_fandisk = fandisk.empty() ? std::string(SIGMOID_NEIGHBORHOODS_DEFAULT_FANDISK) : fandisk;
+    const std::string cgal_fandisk = fandisk.empty() ? std::string(tool_paths::default_fandisk()) : fandisk;
     for(const auto& f : default_cad_models(std::filesystem::path(cgal_fandisk).parent_path().string()))
       names.push_back(f);
   }

@@ -12,6 +12,7 @@
 #include "evaluation_files.h"
 #include "optimal_command.h"
 
+#include <CGAL/Sigmoid_neighborhoods/evaluate_sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 #include <CGAL/Real_timer.h>

@@ -4,14 +4,7 @@
 // sigmoid-neighborhoods: a thin command-line shell over the library.
 
 #include "command_line.h"
-#include "optimal_command.h"
-#include "evaluate_command.h"
-#include "report_command.h"
-#include "filter_command.h"
-#include "denoise_command.h"
-#include "denoising_commands.h"
-#include "classify_command.h"
-#include "catalog_command.h"
+#include "commands.h"
 
 #include <exception>
 #include <iostream>
@@ -63,9 +56,10 @@ int main(int argc, char** argv)
   {
     typedef int (*Run)(int, char**);
     const std::pair<const char*, Run> commands[] = {
-      {"optimal", run_optimal}, {"evaluate", run_evaluate}, {"merge", run_merge}, {"report", run_report},
-      {"filter-normals", run_filter_normals}, {"denoise-experiment", run_denoise_experiment},
-      {"denoise", run_denoise}, {"denoise-comparison", run_denoise_comparison_command},
+      {"optimal", run_optimal_command}, {"evaluate", run_evaluate_command}, {"merge", run_merge_command},
+      {"report", run_report_command}, {"filter-normals", run_filter_normals_command},
+      {"denoise-experiment", run_denoise_experiment_command}, {"denoise", run_denoise_command},
+      {"denoise-comparison", run_denoise_comparison_command},
       {"classify", run_classify}, {"catalog", run_catalog}};
     for(const auto& c : commands)
       if(command == c.first)

@@ -11,7 +11,10 @@
 #include "model_input.h"
 #include "ply_output.h"
 
-#include <CGAL/Sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/concurrency.h>
+#include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>
+#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 
 #include <CGAL/Real_timer.h>

@@ -13,6 +13,7 @@
 #include <CGAL/Sigmoid_neighborhoods/denoise_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/filter_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/orient_normals.h>
+#include <CGAL/Sigmoid_neighborhoods/Point_set_3_properties.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Point_set_3.h>
@@ -31,15 +32,6 @@
 
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  the prefix of the properties the `CGAL::Point_set_3` overloads add: CloudCompare loads a PLY
-  property named `scalar_<name>` as the scalar field `<name>`, so that `CGAL::IO::write_PLY()` of
-  the point set gives a file that CloudCompare opens with every field, and `CGAL::IO::read_PLY()`
-  gives the same names back.
-*/
-const std::string POINT_SET_PROPERTY_PREFIX = "scalar_";
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {

@@ -7,6 +7,7 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_ESTIMATE_NORMALS_H
 
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/Normal_estimation_method.h>
 #include <CGAL/Sigmoid_neighborhoods/weighted_covariance.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
@@ -32,24 +33,6 @@
 
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  the method of `estimate_normals()`: the value type of the named parameter `normal_estimation_method`.
-*/
-enum class Normal_estimation_method
-{
-  PCA, ///< the eigenvector of the smallest eigenvalue of the neighborhood's covariance, as `CGAL::pca_estimate_normals()`
-  JET  ///< the normal of a jet (a polynomial height field) fitted by `CGAL::Monge_via_jet_fitting`, as `CGAL::jet_estimate_normals()`
-};
-
-/// \ingroup PkgSigmoidNeighborhoodsRef
-/// The default method of `estimate_normals()` and of the readers.
-constexpr Normal_estimation_method DEFAULT_NORMAL_ESTIMATION_METHOD = Normal_estimation_method::PCA;
-
-/// \ingroup PkgSigmoidNeighborhoodsRef
-/// The default degree of the jet of `Normal_estimation_method::JET`, CGAL's.
-constexpr unsigned int DEFAULT_JET_DEGREE = 2;
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {

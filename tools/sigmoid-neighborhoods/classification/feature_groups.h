@@ -11,7 +11,10 @@
 #include "../command_line.h"
 #include "../optimal_command.h"
 
-#include <CGAL/Sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_height_features.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_k_nearest_neighbors.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_point_features.h>
+#include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 #include <CGAL/Sigmoid_neighborhoods/Classification/add_point_features.h>
 
 #include <CGAL/Classification/Feature_set.h>

@@ -10,6 +10,7 @@
 #define SIGMOID_NEIGHBORHOODS_TOOL_EXPERIMENTS_TABLE4_DATA_H
 
 #include "table4_models.h"
+#include "../tool_paths.h"
 
 #include <CGAL/Sigmoid_neighborhoods/IO/read_polygon_mesh.h>
 #include <CGAL/Sigmoid_neighborhoods/subdivided_polyhedra.h>
@@ -20,12 +21,6 @@
 #include <filesystem>
 #include <string>
 
-#ifndef SIGMOID_NEIGHBORHOODS_APPLICATION_DATA
-#define SIGMOID_NEIGHBORHOODS_APPLICATION_DATA ""
-#endif
-#ifndef SIGMOID_NEIGHBORHOODS_DEFAULT_FANDISK
-#define SIGMOID_NEIGHBORHOODS_DEFAULT_FANDISK ""
-#endif
 
 namespace sigmoid_tool {
 
@@ -42,7 +37,7 @@ inline std::string default_application_data()
 {
   if(const char* env = std::getenv("SIGMOID_NEIGHBORHOODS_APPLICATION_DATA"))
     return env;
-  return std::filesystem::path(SIGMOID_NEIGHBORHOODS_APPLICATION_DATA).lexically_normal().string();
+  return std::filesystem::path(tool_paths::application_data()).lexically_normal().string();
 }
 
 // The mesh of a model name, or false and the reason it is absent. Models given as files have the
@@ -73,7 +68,7 @@ inline bool load_denoise_mesh(const std::string& name, const std::string& data_d
       return true;
     }
     // libcgal-demo's data/meshes/fandisk.off, as CMake extracted it
-    const std::string cgal_fandisk = SIGMOID_NEIGHBORHOODS_DEFAULT_FANDISK;
+    const std::string cgal_fandisk = tool_paths::default_fandisk();
     if(cgal_fandisk.empty() || !fs::exists(cgal_fandisk, ec))
     {
       absent = "not found: give --fandisk FILE (data/meshes/fandisk.off of libcgal-demo's data archive)";

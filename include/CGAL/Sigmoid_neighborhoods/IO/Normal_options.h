@@ -6,8 +6,6 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_NORMAL_OPTIONS_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_NORMAL_OPTIONS_H
 
-#include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Origin.h>
 

@@ -7,6 +7,7 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_ORIENTED_POINT_SET_H
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Normal_options.h>
+#include <CGAL/Sigmoid_neighborhoods/Normal_estimation_method.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 

@@ -1,14 +1,12 @@
 // Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
+//
+// sigmoid-neighborhoods denoise-comparison (denoise_comparison_command.h).
 
-#include "denoising_commands.h"
-
+#include "commands.h"
 #include "denoise_comparison_command.h"
-#include "denoise_point_set_command.h"
 
 namespace sigmoid_tool {
-
-int run_denoise(int argc, char** argv) { return run_denoise_point_set(argc, argv); }
 
 int run_denoise_comparison_command(int argc, char** argv) { return run_denoise_comparison(argc, argv); }
 

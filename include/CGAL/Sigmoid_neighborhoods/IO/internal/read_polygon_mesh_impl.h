@@ -1,0 +1,55 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+//
+// The definitions of read_polygon_mesh.h: inline in the header-only build, compiled once into the
+// library CGAL::Sigmoid_neighborhoods_IO otherwise (IO/config.h).
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_READ_POLYGON_MESH_IMPL_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_READ_POLYGON_MESH_IMPL_H
+
+#include <CGAL/Sigmoid_neighborhoods/IO/read_polygon_mesh.h>
+
+#include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/input_file.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/mesh_to_points.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_polygon_soup.h>
+
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <string>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+
+CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION void read_polygon_mesh(const std::string& filename, CGAL::Surface_mesh<Oriented_point_set::Point_3>& mesh)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const internal::Input_file file =
+    internal::open_input_file(filename, {"off", "obj", "ply", "stl"}, ".off, .obj, .ply or .stl");
+  internal::Polygon_soup soup;
+  internal::read_polygon_soup(file, soup);
+  if(soup.polygons.empty())
+    throw Input_error("no faces in the file");
+  internal::check_soup(soup);
+  PMP::repair_polygon_soup(soup.points, soup.polygons);
+  PMP::orient_polygon_soup(soup.points, soup.polygons);
+  if(!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
+    throw Input_error("the faces do not form a polygon mesh, even after orientation");
+  PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
+  PMP::remove_isolated_vertices(mesh);
+  mesh.collect_garbage();
+  if(mesh.is_empty() || mesh.number_of_faces() == 0)
+    throw Input_error("no faces in the file");
+}
+
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_READ_POLYGON_MESH_IMPL_H

@@ -1,0 +1,108 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What the steps of sigmoid-neighborhoods classify share (classify_*_command.cpp): the files read and
+// featured, CGAL's ETHZ random forest trained and applied, the outputs and the line of progress. Their
+// definitions are in classify_common.cpp, the one translation unit that instantiates CGAL's training,
+// classify(), graph-cut, the PLY writer and the feature computation of add_features(). This header needs
+// classifier_model.h for the types the steps hold (Classifier_settings, its Feature_options, the
+// Feature_column of a file), and with it feature_groups.h and the package's headers.
+
+#ifndef SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_CLASSIFY_COMMON_H
+#define SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_CLASSIFY_COMMON_H
+
+#include "classifier_model.h"
+#include "confusion.h"
+#include "feature_groups.h"
+#include "label_mapping.h"
+#include "../command_line.h"
+#include "../model_input.h"
+
+#include <CGAL/Classification/ETHZ/Random_forest_classifier.h>
+#include <CGAL/Classification/Feature_set.h>
+#include <CGAL/Classification/Label_set.h>
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace sigmoid_tool {
+
+// The steps of classify, one translation unit each, that run_classify (classify_command.cpp) dispatches to.
+int run_classify_train(int argc, char** argv);      // classify_train_command.cpp
+int run_classify_predict(int argc, char** argv);    // classify_predict_command.cpp
+int run_classify_evaluate(int argc, char** argv);   // classify_evaluate_command.cpp
+int run_classify_experiment(int argc, char** argv); // classify_experiment_command.cpp
+
+namespace classification {
+
+extern const char* const CLASSIFY_USAGE; // classify_command.cpp
+
+std::string number_fixed(double v, int digits);
+std::string percent(double v); // "n/a" for NaN
+std::string fixed3(double v);  // "n/a" for NaN
+
+// One line of progress on a terminal, nothing in a log.
+void progress(const std::string& what);
+void end_progress();
+
+// A labeled (or unlabeled) file read and featured.
+struct Featured_file
+{
+  std::string path;
+  SN::Oriented_point_set model;
+  std::vector<int> truth; // class index per point, -1: not in any class (or no labels)
+  std::vector<Feature_column> columns;
+  double seconds_features = 0.;
+};
+
+SN::Normal_options classify_normal_options(const Arguments& args);
+
+// --graphcut STRENGTH (0: none).
+double read_graphcut(const Arguments& args);
+
+// The truth and, when `compute_features`, the feature columns of `f.model`.
+void add_features(Featured_file& f, const Label_mapping& labels, bool need_labels, const Feature_options& features,
+                  bool compute_features = true);
+
+Featured_file read_and_feature(const std::string& path, const Label_mapping& labels, bool need_labels,
+                               const SN::Normal_options& normals, const Feature_options& features,
+                               bool compute_features = true);
+
+typedef CGAL::Classification::ETHZ::Random_forest_classifier Forest;
+
+// Trains a forest on `files`; returns the settings with the feature names in the forest's order.
+struct Trained
+{
+  Classifier_settings settings;
+  CGAL::Classification::Label_set labels;
+  CGAL::Classification::Feature_set features;
+  std::unique_ptr<Forest> forest;
+  double seconds = 0.;
+};
+
+void train(const std::vector<Featured_file>& files, Trained& t);
+
+// The classes of one file under a trained forest, and each class's probability per point.
+struct Prediction
+{
+  std::vector<int> classes;
+  std::vector<std::vector<float>> confidence; // per class, per point
+  double seconds = 0.;
+};
+
+Prediction predict(const Featured_file& file, const Classifier_settings& settings, const std::string& forest_bytes,
+                   const Forest* trained, double graphcut);
+
+// The points `first` ... `last - 1` of `file` (a tile without its halo), all by default.
+void write_prediction_ply(const std::string& path, const Featured_file& file, const Prediction& p,
+                          const Label_mapping& m, std::size_t first = 0, std::size_t last = std::size_t(-1));
+
+void write_evaluation(const std::string& dir, const Confusion& c, const Label_mapping& m, const std::string& title);
+
+} // namespace classification
+
+} // namespace sigmoid_tool
+
+#endif // SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_CLASSIFY_COMMON_H

@@ -1,0 +1,516 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// sigmoid-neighborhoods classify experiment: feature sets compared on training and test files, in
+// several feature orders, with and without graph-cut, each cross-validated on the training files, and
+// the report of it (experiment.md, .csv, .json, runs.csv, the figure of a test file).
+
+#include "classification/classify_common.h"
+#include "classification/confusion.h"
+#include "classification/feature_groups.h"
+#include "classification/label_mapping.h"
+#include "command_line.h"
+#include "model_input.h"
+
+#include <CGAL/Real_timer.h>
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sigmoid_tool {
+
+using namespace classification; // what the steps share: classification/classify_common.h
+
+namespace {
+
+// The feature sets of the experiment: what a CGAL user has (A), the fixed scale of pgeof and
+// jakteristics (B), the classical optimal neighborhoods (C, D), the package's (E), several scales
+// without and with sigmoid weights (F, F_sigmoid), and CGAL's with the package's added (G_*), the
+// last two of them the same ablation on top of CGAL's.
+const char* const DEFAULT_EXPERIMENT_SETS =
+  "A=cgal;B=k20,height;C=eigenentropy,height;D=dimensionality,height;E=optimal,height;F=multiscale,height;"
+  "F_sigmoid=multiscale-sigmoid,height;G_optimal=cgal,optimal;G_multiscale=cgal,multiscale;"
+  "G_multiscale_sigmoid=cgal,multiscale-sigmoid";
+
+struct Feature_set_spec
+{
+  std::string name;
+  std::vector<std::string> groups;
+};
+
+std::vector<Feature_set_spec> parse_sets(const std::string& text)
+{
+  std::vector<Feature_set_spec> sets;
+  for(const std::string& item : split(text, ';'))
+  {
+    const std::size_t equals = item.find('=');
+    if(equals == std::string::npos || equals == 0)
+      throw Usage_error("--sets: expected NAME=GROUP[,GROUP...], got '" + item + "'");
+    sets.push_back({item.substr(0, equals), parse_feature_groups(item.substr(equals + 1))});
+  }
+  return sets;
+}
+
+std::vector<std::string> split_list(const std::string& text, const std::string& option)
+{
+  std::vector<std::string> items;
+  for(const std::string& item : split(text, ','))
+    if(!item.empty())
+      items.push_back(item);
+  if(items.empty())
+    throw Usage_error(option + " needs at least one file");
+  return items;
+}
+
+// One file of the experiment: read once, each feature group computed once (and timed), the sets'
+// columns assembled from the groups.
+struct Experiment_file
+{
+  Featured_file file; // columns empty: see groups
+  std::map<std::string, std::vector<Feature_column>> groups;
+  std::map<std::string, double> seconds;
+};
+
+Experiment_file read_experiment_file(const std::string& path, const Label_mapping& labels,
+                                     const SN::Normal_options& normals, const Feature_options& base,
+                                     const std::vector<std::string>& groups)
+{
+  Experiment_file e;
+  Feature_options all = base;
+  all.groups = groups;
+  // read with the rows of every group kept, then no group: each is computed and timed below, on those rows
+  e.file = read_and_feature(path, labels, true, normals, all, false);
+  for(const std::string& group : groups)
+  {
+    Feature_options one = base;
+    one.groups = {group};
+    CGAL::Real_timer timer;
+    timer.start();
+    e.groups[group] = compute_feature_columns(e.file.model, one, [&](const std::string& step) {
+      progress(path + ": " + step);
+    });
+    e.seconds[group] = timer.time();
+  }
+  return e;
+}
+
+Featured_file with_set(const Experiment_file& e, const Feature_set_spec& set)
+{
+  Featured_file f;
+  f.path = e.file.path;
+  f.model.points = e.file.model.points; // for graph-cut's neighborhoods
+  f.model.labels = e.file.model.labels;
+  f.truth = e.file.truth;
+  for(const std::string& group : set.groups)
+  {
+    const auto& columns = e.groups.at(group);
+    f.columns.insert(f.columns.end(), columns.begin(), columns.end());
+    f.seconds_features += e.seconds.at(group);
+  }
+  return f;
+}
+
+struct Run_result
+{
+  std::string set;
+  unsigned int order = 0;
+  bool graphcut = false;
+  Confusion confusion{0};
+  double train_seconds = 0., classify_seconds = 0.;
+  std::vector<int> first_test_file; // its classes, kept for the figure (order 1 without graph-cut)
+};
+
+struct Set_summary
+{
+  std::string set;
+  bool graphcut = false;
+  std::size_t features = 0;
+  double miou_mean = 0., miou_min = 0., miou_max = 0., oa_mean = 0., mf1_mean = 0.;
+  std::vector<double> class_iou_mean;
+  double feature_seconds = 0., train_seconds = 0., classify_seconds = 0.;
+  double cross_validated_miou = std::numeric_limits<double>::quiet_NaN(); // on the training files
+};
+
+// Mean IoU of leaving each training file out in turn, per (set, graph-cut): the choice of a set is
+// made on these, never on the test files.
+typedef std::map<std::pair<std::string, bool>, double> Cross_validation;
+
+std::vector<Set_summary> summarize(const std::vector<Feature_set_spec>& sets, const std::vector<Run_result>& runs,
+                                   const std::vector<Experiment_file>& train_files,
+                                   const std::vector<Experiment_file>& test_files, std::size_t classes)
+{
+  std::vector<Set_summary> result;
+  for(const Feature_set_spec& set : sets)
+    for(bool graphcut : {false, true})
+    {
+      Set_summary s;
+      s.set = set.name;
+      s.graphcut = graphcut;
+      s.class_iou_mean.assign(classes, 0.);
+      s.miou_min = std::numeric_limits<double>::infinity();
+      s.miou_max = -s.miou_min;
+      std::size_t n = 0;
+      for(const Run_result& r : runs)
+        if(r.set == set.name && r.graphcut == graphcut)
+        {
+          const double miou = r.confusion.mean_iou();
+          s.miou_mean += miou;
+          s.miou_min = std::min(s.miou_min, miou);
+          s.miou_max = std::max(s.miou_max, miou);
+          s.oa_mean += r.confusion.overall_accuracy();
+          s.mf1_mean += r.confusion.mean_f1();
+          for(std::size_t c = 0; c < classes; ++c)
+            s.class_iou_mean[c] += r.confusion.iou(c);
+          s.train_seconds += r.train_seconds;
+          s.classify_seconds += r.classify_seconds;
+          ++n;
+        }
+      if(n == 0)
+        continue;
+      s.miou_mean /= double(n);
+      s.oa_mean /= double(n);
+      s.mf1_mean /= double(n);
+      for(double& v : s.class_iou_mean)
+        v /= double(n);
+      s.train_seconds /= double(n);
+      s.classify_seconds /= double(n);
+      for(const auto* files : {&train_files, &test_files})
+        for(const Experiment_file& e : *files)
+          for(const std::string& g : set.groups)
+            s.feature_seconds += e.seconds.at(g);
+      if(!train_files.empty())
+        for(const std::string& g : set.groups)
+          s.features += train_files.front().groups.at(g).size();
+      result.push_back(std::move(s));
+    }
+  return result;
+}
+
+void write_experiment(const std::string& dir, const std::vector<Feature_set_spec>& sets,
+                      const std::vector<Experiment_file>& train_files, const std::vector<Experiment_file>& test_files,
+                      const std::vector<Run_result>& runs, const Classifier_settings& base, unsigned int orders,
+                      double graphcut, const Cross_validation& cross_validation, unsigned int cv_orders)
+{
+  const Label_mapping& m = base.labels;
+  const std::size_t classes = m.names.size();
+  std::vector<Set_summary> summaries = summarize(sets, runs, train_files, test_files, classes);
+  const Set_summary* chosen = nullptr;
+  for(Set_summary& s : summaries)
+  {
+    const auto it = cross_validation.find({s.set, s.graphcut});
+    if(it != cross_validation.end())
+      s.cross_validated_miou = it->second;
+  }
+  for(const Set_summary& s : summaries)
+    if(!std::isnan(s.cross_validated_miou) && (chosen == nullptr || s.cross_validated_miou > chosen->cross_validated_miou))
+      chosen = &s;
+  auto count_points = [](const std::vector<Experiment_file>& files) {
+    std::size_t labeled = 0;
+    for(const Experiment_file& e : files)
+      for(int t : e.file.truth)
+        labeled += t >= 0;
+    return labeled;
+  };
+  auto paths = [](const std::vector<Experiment_file>& files) {
+    std::string s;
+    for(const Experiment_file& e : files)
+      s += (s.empty() ? "" : ", ") + std::string("`") + std::filesystem::path(e.file.path).filename().string() + "`";
+    return s;
+  };
+
+  write_file_atomically(dir + "/runs.csv", [&](std::ofstream& out) {
+    out << "set,order,graphcut,overall_accuracy,mean_f1,mean_iou";
+    for(const std::string& name : m.names)
+      out << ",iou_" << name;
+    out << ",train_seconds,classify_seconds\n";
+    for(const Run_result& r : runs)
+    {
+      out << r.set << ',' << r.order << ',' << (r.graphcut ? 1 : 0) << ',' << number17(r.confusion.overall_accuracy())
+          << ',' << number17(r.confusion.mean_f1()) << ',' << number17(r.confusion.mean_iou());
+      for(std::size_t c = 0; c < classes; ++c)
+        out << ',' << number17(r.confusion.iou(c));
+      out << ',' << number_fixed(r.train_seconds, 3) << ',' << number_fixed(r.classify_seconds, 3) << '\n';
+    }
+  });
+
+  write_file_atomically(dir + "/experiment.csv", [&](std::ofstream& out) {
+    out << "set,groups,graphcut,features,mean_iou_mean,mean_iou_min,mean_iou_max,overall_accuracy_mean,mean_f1_mean";
+    for(const std::string& name : m.names)
+      out << ",iou_" << name << "_mean";
+    out << ",feature_seconds,train_seconds_mean,classify_seconds_mean,cross_validated_mean_iou\n";
+    for(const Set_summary& s : summaries)
+    {
+      std::string groups;
+      for(const Feature_set_spec& set : sets)
+        if(set.name == s.set)
+          for(const std::string& g : set.groups)
+            groups += (groups.empty() ? "" : "+") + g;
+      out << s.set << ',' << groups << ',' << (s.graphcut ? 1 : 0) << ',' << s.features << ','
+          << number17(s.miou_mean) << ',' << number17(s.miou_min) << ',' << number17(s.miou_max) << ','
+          << number17(s.oa_mean) << ',' << number17(s.mf1_mean);
+      for(double v : s.class_iou_mean)
+        out << ',' << number17(v);
+      out << ',' << number_fixed(s.feature_seconds, 2) << ',' << number_fixed(s.train_seconds, 2) << ','
+          << number_fixed(s.classify_seconds, 2) << ','
+          << (std::isnan(s.cross_validated_miou) ? std::string() : number17(s.cross_validated_miou)) << '\n';
+    }
+  });
+
+  nlohmann::json j;
+  j["labels"] = m.text();
+  j["train"] = nlohmann::json::array();
+  for(const Experiment_file& e : train_files)
+    j["train"].push_back(e.file.path);
+  for(const Experiment_file& e : test_files)
+    j["test"].push_back(e.file.path);
+  j["orders"] = orders;
+  j["graphcut_strength"] = graphcut;
+  j["trees"] = base.trees;
+  j["depth"] = base.depth;
+  j["normals"] = settings_json(base)["normals"];
+  j["cross_validation_orders"] = cv_orders;
+  if(chosen != nullptr)
+    j["chosen"] = {{"set", chosen->set}, {"graphcut", chosen->graphcut}};
+  for(const Set_summary& s : summaries)
+  {
+    nlohmann::json row = {{"set", s.set},          {"graphcut", s.graphcut},     {"features", s.features},
+                          {"mean_iou", {{"mean", s.miou_mean}, {"min", s.miou_min}, {"max", s.miou_max}}},
+                          {"overall_accuracy_mean", s.oa_mean}, {"mean_f1_mean", s.mf1_mean},
+                          {"feature_seconds", s.feature_seconds}, {"train_seconds_mean", s.train_seconds},
+                          {"classify_seconds_mean", s.classify_seconds}};
+    if(!std::isnan(s.cross_validated_miou))
+      row["cross_validated_mean_iou"] = s.cross_validated_miou;
+    for(std::size_t c = 0; c < classes; ++c)
+      row["iou_mean"][m.names[c]] = s.class_iou_mean[c];
+    j["sets"].push_back(row);
+  }
+  write_file_atomically(dir + "/experiment.json", [&](std::ofstream& out) { out << j.dump(2) << '\n'; });
+
+  write_file_atomically(dir + "/experiment.md", [&](std::ofstream& out) {
+    out << "# Classification experiment\n\n"
+        << "CGAL's ETHZ random forest (" << base.trees << " trees, depth " << base.depth << "), trained on "
+        << paths(train_files) << " (" << count_points(train_files) << " labeled points), tested on "
+        << paths(test_files) << " (" << count_points(test_files) << "); classes " << m.text()
+        << ", other codes ignored. Every set in " << orders
+        << " feature orders (the forest depends on the order): mean IoU as mean [min, max]; the other scores are "
+           "means. Graph-cut: CGAL's classify_with_graphcut, strength "
+        << number_fixed(graphcut, 2) << ", 12 neighbors. Times: features of all files, training and "
+           "classification (one order).\n\n"
+        << "| set | groups | graph-cut | features | mean IoU | OA | mean F1 |";
+    for(const std::string& name : m.names)
+      out << " IoU " << name << " |";
+    out << " features + train + classify | cross-validated mean IoU |\n|---|---|---|---:|---|---:|---:|";
+    for(std::size_t c = 0; c < classes; ++c)
+      out << "---:|";
+    out << "---:|---:|\n";
+    for(const Set_summary& s : summaries)
+    {
+      std::string groups;
+      for(const Feature_set_spec& set : sets)
+        if(set.name == s.set)
+          for(const std::string& g : set.groups)
+            groups += (groups.empty() ? "" : " + ") + g;
+      out << "| " << s.set << " | " << groups << " | " << (s.graphcut ? "yes" : "no") << " | " << s.features << " | "
+          << fixed3(s.miou_mean) << " [" << fixed3(s.miou_min) << ", " << fixed3(s.miou_max) << "] | "
+          << percent(s.oa_mean) << " | " << fixed3(s.mf1_mean) << " |";
+      for(double v : s.class_iou_mean)
+        out << ' ' << fixed3(v) << " |";
+      out << ' ' << number_fixed(s.feature_seconds, 1) << " + " << number_fixed(s.train_seconds, 1) << " + "
+          << number_fixed(s.classify_seconds, 1) << " s | " << fixed3(s.cross_validated_miou) << " |\n";
+    }
+    if(chosen != nullptr)
+      out << "\nChosen on the training files alone (the best cross-validated mean IoU: each training file left out "
+             "in turn, the forest trained on the others, "
+          << cv_orders << " order" << (cv_orders == 1 ? "" : "s") << "): **" << chosen->set << "**, "
+          << (chosen->graphcut ? "with" : "without") << " graph-cut, which scores " << fixed3(chosen->miou_mean)
+          << " [" << fixed3(chosen->miou_min) << ", " << fixed3(chosen->miou_max) << "] on the test files.\n";
+  });
+  std::cerr << dir << "/experiment.md: " << sets.size() << " feature sets, " << orders << " orders, "
+            << runs.size() << " runs\n";
+}
+
+// The first test file seen from above, by the truth, by the first set and by the set of best mean
+// IoU without graph-cut (order 1), and their errors: DIR/figure_tile.csv and DIR/figure_tile.png.
+bool write_experiment_figure(const std::string& dir, const std::vector<Feature_set_spec>& sets,
+                             const Experiment_file& tile, const std::vector<Run_result>& runs, const Label_mapping& m)
+{
+  const std::vector<Set_summary> summaries =
+    summarize(sets, runs, std::vector<Experiment_file>{}, std::vector<Experiment_file>{}, m.names.size());
+  std::string best;
+  double best_iou = -1.;
+  for(const Set_summary& s : summaries)
+    if(!s.graphcut && s.set != sets.front().name && s.miou_mean > best_iou)
+    {
+      best_iou = s.miou_mean;
+      best = s.set;
+    }
+  std::vector<std::string> shown{sets.front().name};
+  if(!best.empty())
+    shown.push_back(best);
+  std::vector<const std::vector<int>*> predictions;
+  for(const std::string& name : shown)
+    for(const Run_result& r : runs)
+      if(r.set == name && r.order == 1 && !r.graphcut)
+        predictions.push_back(&r.first_test_file);
+  const std::string csv = dir + "/figure_tile.csv";
+  write_file_atomically(csv, [&](std::ofstream& out) {
+    out << "x,y,z,truth";
+    for(const std::string& name : shown)
+      out << ',' << name;
+    out << '\n';
+    for(std::size_t i = 0; i < tile.file.model.points.size(); ++i)
+    {
+      const auto& p = tile.file.model.points[i];
+      out << number17(p.x()) << ',' << number17(p.y()) << ',' << number17(p.z()) << ',' << tile.file.truth[i];
+      for(const auto* prediction : predictions)
+        out << ',' << (*prediction)[i];
+      out << '\n';
+    }
+  });
+  std::string classes;
+  for(const std::string& name : m.names)
+    classes += (classes.empty() ? "" : ",") + name;
+  const std::string title = std::filesystem::path(tile.file.path).filename().string() + ": truth, " +
+                            shown.front() + (best.empty() ? "" : " and " + best) + " (order 1, no graph-cut)";
+  if(!run_python_script("plot_classification.py", {csv, dir + "/figure_tile.png", "--classes", classes, "--title", title}))
+  {
+    std::cerr << "sigmoid-neighborhoods classify: the figure failed (plot_classification.py, matplotlib); "
+              << csv << " holds its data\n";
+    return false;
+  }
+  return true;
+}
+
+} // namespace
+
+int run_classify_experiment(int argc, char** argv)
+{
+  const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT + 1,
+                       with_normal_options({"-o", "--output", "--train", "--test", "--sets", "--orders", "--graphcut",
+                                            "--labels", "--trees", "--depth", "--threads", "--cv-orders"}),
+                       with_normal_flags({"-h", "--help"}), NORMAL_TRIPLE_OPTIONS);
+  if(print_help(args, CLASSIFY_USAGE))
+    return EXIT_OK;
+  const std::string output = args.output();
+  if(output.empty() || !args.has("--train") || !args.has("--test") || !args.positional().empty())
+    throw Usage_error("classify experiment needs --train FILE,... --test FILE,... -o DIR");
+  const std::vector<std::string> train_paths = split_list(args.get("--train"), "--train");
+  const std::vector<std::string> test_paths = split_list(args.get("--test"), "--test");
+  const std::vector<Feature_set_spec> sets = parse_sets(args.get("--sets", DEFAULT_EXPERIMENT_SETS));
+  const unsigned int orders = args.get_unsigned("--orders", 10);
+  const unsigned int cv_orders = args.get_unsigned("--cv-orders", 1);
+  const double graphcut = args.has("--graphcut") ? read_graphcut(args) : 0.2;
+  if(orders < 1)
+    throw Usage_error("--orders must be at least 1");
+  Classifier_settings base;
+  base.labels = parse_label_mapping(args.get("--labels", DEFAULT_LABELS));
+  base.normals = classify_normal_options(args);
+  base.features.threads = read_threads(args);
+  base.trees = args.get_unsigned("--trees", 25);
+  base.depth = args.get_unsigned("--depth", 20);
+  std::vector<std::string> groups;
+  for(const Feature_set_spec& set : sets)
+    for(const std::string& g : set.groups)
+      if(std::find(groups.begin(), groups.end(), g) == groups.end())
+        groups.push_back(g);
+  create_output_folder(output);
+
+  std::vector<Experiment_file> train_files, test_files;
+  for(const std::string& path : train_paths)
+    train_files.push_back(read_experiment_file(path, base.labels, base.normals, base.features, groups));
+  for(const std::string& path : test_paths)
+    test_files.push_back(read_experiment_file(path, base.labels, base.normals, base.features, groups));
+
+  std::vector<Run_result> runs;
+  for(const Feature_set_spec& set : sets)
+  {
+    std::vector<Featured_file> train_set, test_set;
+    for(const Experiment_file& e : train_files)
+      train_set.push_back(with_set(e, set));
+    for(const Experiment_file& e : test_files)
+      test_set.push_back(with_set(e, set));
+    for(unsigned int order = 1; order <= orders; ++order)
+    {
+      progress(set.name + ": order " + std::to_string(order) + " of " + std::to_string(orders));
+      Trained t;
+      t.settings = base;
+      t.settings.features.groups = set.groups;
+      t.settings.feature_order_seed = order;
+      train(train_set, t);
+      for(bool with_graphcut : {false, true})
+      {
+        Run_result r;
+        r.set = set.name;
+        r.order = order;
+        r.graphcut = with_graphcut;
+        r.confusion = Confusion(base.labels.names.size());
+        r.train_seconds = t.seconds;
+        for(const Featured_file& f : test_set)
+        {
+          const Prediction p = predict(f, t.settings, std::string(), t.forest.get(), with_graphcut ? graphcut : 0.);
+          r.classify_seconds += p.seconds;
+          for(std::size_t i = 0; i < p.classes.size(); ++i)
+            r.confusion.add(f.truth[i], p.classes[i]);
+          if(order == 1 && !with_graphcut && &f == &test_set.front())
+            r.first_test_file = p.classes;
+        }
+        runs.push_back(std::move(r));
+      }
+    }
+  }
+  // Leave one training file out: what the choice of a set and of the graph-cut is made on.
+  Cross_validation cross_validation;
+  if(train_files.size() >= 2)
+    for(const Feature_set_spec& set : sets)
+    {
+      std::array<double, 2> sum{{0., 0.}};
+      for(unsigned int order = 1; order <= cv_orders; ++order)
+      {
+        std::array<Confusion, 2> pooled{{Confusion(base.labels.names.size()), Confusion(base.labels.names.size())}};
+        for(std::size_t left_out = 0; left_out < train_files.size(); ++left_out)
+        {
+          progress(set.name + ": cross-validation, order " + std::to_string(order) + ", fold " +
+                   std::to_string(left_out + 1));
+          std::vector<Featured_file> others;
+          for(std::size_t f = 0; f < train_files.size(); ++f)
+            if(f != left_out)
+              others.push_back(with_set(train_files[f], set));
+          Trained t;
+          t.settings = base;
+          t.settings.features.groups = set.groups;
+          t.settings.feature_order_seed = order;
+          train(others, t);
+          const Featured_file held_out = with_set(train_files[left_out], set);
+          for(int with_graphcut = 0; with_graphcut < 2; ++with_graphcut)
+          {
+            const Prediction p = predict(held_out, t.settings, std::string(), t.forest.get(),
+                                         with_graphcut ? graphcut : 0.);
+            for(std::size_t i = 0; i < p.classes.size(); ++i)
+              pooled[std::size_t(with_graphcut)].add(held_out.truth[i], p.classes[i]);
+          }
+        }
+        for(std::size_t g = 0; g < 2; ++g)
+          sum[g] += pooled[g].mean_iou();
+      }
+      for(std::size_t g = 0; g < 2; ++g)
+        if(cv_orders > 0)
+          cross_validation[{set.name, g == 1}] = sum[g] / double(cv_orders);
+    }
+  end_progress();
+  write_experiment(output, sets, train_files, test_files, runs, base, orders, graphcut, cross_validation, cv_orders);
+  return write_experiment_figure(output, sets, test_files.front(), runs, base.labels) ? EXIT_OK : EXIT_FAILED;
+}
+
+} // namespace sigmoid_tool

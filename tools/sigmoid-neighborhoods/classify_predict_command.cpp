@@ -1,0 +1,101 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// sigmoid-neighborhoods classify predict: the classes of a point set, or of a catalog's union or one
+// of its tiles, under a model file, written as a PLY.
+
+#include "classification/classify_common.h"
+#include "classification/feature_groups.h"
+#include "catalog_input.h"
+#include "command_line.h"
+
+#include <CGAL/Real_timer.h>
+
+#include <cstddef>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sigmoid_tool {
+
+using namespace classification; // what the steps share: classification/classify_common.h
+
+namespace {
+
+// What a tile's features or labels cannot share with the union: a refusal naming it, before any reading.
+void refuse_inexact_tile(const Classifier_settings& settings, double graphcut)
+{
+  const std::string groups = whole_set_groups(settings.features);
+  if(!groups.empty())
+    throw Usage_error("classify predict --tile: the model's feature group " + groups +
+                      " depends on the whole point set (CGAL's generator: scales from the average spacing, grids "
+                      "anchored at the bounding box), so a tile would not get the union's features; predict the "
+                      "union (--catalog without --tile) or use a model without it");
+  if(graphcut > 0.)
+    throw Usage_error("classify predict --tile: --graphcut minimises over the whole point set, so a tile would not "
+                      "get the union's labels; predict the union (--catalog without --tile) or leave --graphcut out");
+}
+
+// Which model a tile was predicted with, for the tile description: its settings and its trees.
+std::string model_fingerprint(const Classifier_settings& settings, const std::string& forest_bytes)
+{
+  return "model:" + std::to_string(std::hash<std::string>()(settings_json(settings).dump() + forest_bytes));
+}
+
+} // namespace
+
+int run_classify_predict(int argc, char** argv)
+{
+  const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT + 1,
+                       with_catalog_options({"-o", "--output", "--graphcut", "--threads"}), {"-h", "--help"});
+  if(print_help(args, CLASSIFY_USAGE))
+  {
+    std::cout << CATALOG_USAGE;
+    return EXIT_OK;
+  }
+  if(args.positional().empty())
+    throw Usage_error("classify predict needs MODEL INPUT, or MODEL --catalog SOURCE");
+  const std::string output = args.output();
+  if(output.empty())
+    throw Usage_error("classify predict needs -o OUT.ply");
+  const std::string& model_path = args.positional()[0];
+  std::string forest_bytes;
+  Classifier_settings settings = read_classifier_settings(model_path, forest_bytes);
+  const std::string model = model_fingerprint(settings, forest_bytes);
+  settings.features.threads = settings.normals.threads = read_threads(args);
+  const double graphcut = read_graphcut(args);
+  if(args.has("--tile"))
+    refuse_inexact_tile(settings, graphcut);
+  CGAL::Real_timer timer;
+  timer.start();
+  progress("reading");
+  // the normals' neighbor rows kept for the features; a tile's halo holds them and the height cells
+  Input_points in = read_input_points(args, "classify predict", largest_neighborhood(settings.features),
+                                      settings.normals, cell_halo(settings.features), 1);
+  if(in.is_tile && in.first == in.last)
+    throw Usage_error(in.source + ": tile " + in.tile_name + " has no point of its own (empty, or all on an earlier "
+                      "tile's seam): nothing to predict");
+  Featured_file file;
+  file.path = in.source;
+  file.model = std::move(in.model);
+  add_features(file, settings.labels, false, settings.features);
+  const Prediction p = predict(file, settings, forest_bytes, nullptr, graphcut);
+  write_prediction_ply(output, file, p, settings.labels, in.first, in.last);
+  timer.stop();
+  write_tile_description(output, "classify predict", args, in, timer.time(), model);
+  end_progress();
+  std::vector<std::size_t> counts(settings.labels.names.size(), 0);
+  for(std::size_t i = in.first; i < in.last; ++i)
+    if(p.classes[i] >= 0)
+      ++counts[std::size_t(p.classes[i])];
+  std::cerr << output << ": " << in.last - in.first << " points" << halo_description(in) << ":";
+  for(std::size_t c = 0; c < counts.size(); ++c)
+    std::cerr << (c ? ", " : " ") << settings.labels.names[c] << ' ' << counts[c];
+  std::cerr << "; features " << number_fixed(file.seconds_features, 1) << " s, classification "
+            << number_fixed(p.seconds, 1) << " s\n";
+  return EXIT_OK;
+}
+
+} // namespace sigmoid_tool

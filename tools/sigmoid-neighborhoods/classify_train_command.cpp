@@ -1,0 +1,78 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// sigmoid-neighborhoods classify train: CGAL's ETHZ random forest trained on labeled point sets, saved
+// as a model file (classification/classifier_model.h).
+
+#include "classification/classify_common.h"
+#include "classification/feature_groups.h"
+#include "classification/label_mapping.h"
+#include "command_line.h"
+#include "model_input.h"
+
+#include <cstddef>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace sigmoid_tool {
+
+using namespace classification; // what the steps share: classification/classify_common.h
+
+namespace {
+
+Feature_options read_feature_options(const Arguments& args)
+{
+  Feature_options o;
+  o.groups = parse_feature_groups(args.get("--features", "cgal"));
+  o.threads = read_threads(args);
+  return o;
+}
+
+} // namespace
+
+int run_classify_train(int argc, char** argv)
+{
+  const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT + 1,
+                       with_normal_options({"-o", "--output", "--labels", "--features", "--trees", "--depth",
+                                            "--feature-order-seed", "--threads"}),
+                       with_normal_flags({"-h", "--help"}), NORMAL_TRIPLE_OPTIONS);
+  if(print_help(args, CLASSIFY_USAGE))
+  {
+    std::cout << FEATURE_GROUPS_USAGE << NORMAL_USAGE;
+    return EXIT_OK;
+  }
+  if(args.positional().empty())
+    throw Usage_error("classify train needs at least one labeled FILE");
+  const std::string output = args.output();
+  if(output.empty())
+    throw Usage_error("classify train needs -o MODEL");
+  Trained t;
+  t.settings.labels = parse_label_mapping(args.get("--labels", DEFAULT_LABELS));
+  t.settings.features = read_feature_options(args);
+  t.settings.normals = classify_normal_options(args);
+  t.settings.trees = args.get_unsigned("--trees", 25);
+  t.settings.depth = args.get_unsigned("--depth", 20);
+  t.settings.feature_order_seed = args.get_unsigned("--feature-order-seed", 0);
+  if(t.settings.trees < 1 || t.settings.depth < 1)
+    throw Usage_error("--trees and --depth must be at least 1");
+  std::vector<Featured_file> files;
+  for(const std::string& path : args.positional())
+    files.push_back(read_and_feature(path, t.settings.labels, true, t.settings.normals, t.settings.features));
+  train(files, t);
+  write_classifier_model(output, t.settings, *t.forest);
+  end_progress();
+  std::size_t points = 0;
+  double feature_seconds = 0.;
+  for(const Featured_file& f : files)
+  {
+    points += f.model.points.size();
+    feature_seconds += f.seconds_features;
+  }
+  std::cerr << output << ": " << t.settings.feature_names.size() << " features, " << t.settings.labels.names.size()
+            << " classes, " << points << " points from " << files.size() << " file(s); features "
+            << number_fixed(feature_seconds, 1) << " s, training " << number_fixed(t.seconds, 1) << " s\n";
+  return EXIT_OK;
+}
+
+} // namespace sigmoid_tool
