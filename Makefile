@@ -13,9 +13,13 @@ BUILD_DIR ?= build
 RESULTS_DIR ?= results
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_FLAGS ?=
-DEBIAN_PACKAGES = g++ make cmake ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev \
-                  libgmp-dev libmpfr-dev libtbb-dev libboost-serialization-dev libboost-iostreams-dev zlib1g-dev \
-                  nlohmann-json3-dev catch2 python3-matplotlib python3-numpy doxygen parallel \
+# What `make evaluate` needs: the compiler, CGAL and its dependencies, JSON, and matplotlib for the
+# report's figures.
+EVALUATE_PACKAGES = g++ make cmake ccache libcgal-dev libcgal-demo libeigen3-dev libboost-dev \
+                    libgmp-dev libmpfr-dev libboost-serialization-dev libboost-iostreams-dev zlib1g-dev \
+                    nlohmann-json3-dev python3-matplotlib python3-numpy
+# and for everything else (the tests, the manual, the Python module, the scale-out recipes)
+DEBIAN_PACKAGES = $(EVALUATE_PACKAGES) libtbb-dev catch2 doxygen parallel \
                   python3-dev python3-venv python3-setuptools python3-pytest pybind11-dev python3-pybind11
 # Only for `make test`: the viewer test opens the tool's PLY files in CloudCompare (headless); the
 # Python examples' tests use Open3D and scikit-learn.
@@ -24,7 +28,7 @@ CGAL_DATA_ARCHIVE = /usr/share/doc/libcgal-dev/data.tar.gz
 CORPUS_DIR = $(BUILD_DIR)/cgal-data
 TOOL = $(BUILD_DIR)/tools/sigmoid-neighborhoods/sigmoid-neighborhoods
 
-.PHONY: all deps test-deps configure build build-tool doc test sanitize fuzz fuzz-evaluation evaluate corpus denoising classification python clean
+.PHONY: all deps deps-evaluate test-deps configure build build-tool doc test sanitize fuzz fuzz-evaluation evaluate corpus denoising classification python clean
 
 all: build
 
@@ -42,13 +46,20 @@ deps:
 	fi
 
 configure: deps
-	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON $(CMAKE_FLAGS)
 
 build: configure
 	cmake --build $(BUILD_DIR) -j $(JOBS)
 
-# Only what the main job runs: the tool (its commands and the readers' library).
-build-tool: configure
+# Only what the main job runs: the tool (its commands and the readers' library), configured without
+# the tests (catch2 and the test packages are not needed yet); `make build` or `make test` later
+# configures the same folder with them and reuses the tool as built.
+deps-evaluate:
+	@$(MAKE) --no-print-directory deps DEBIAN_PACKAGES="$(EVALUATE_PACKAGES)"
+
+build-tool: deps-evaluate
+	@if [ -f $(BUILD_DIR)/CMakeCache.txt ]; then cmake -S . -B $(BUILD_DIR) > /dev/null; \
+	else cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF $(CMAKE_FLAGS); fi
 	cmake --build $(BUILD_DIR) --target sigmoid-neighborhoods -j $(JOBS)
 
 # The manual (Doxygen, doc/Sigmoid_neighborhoods/), written to $(BUILD_DIR)/doc/html/. Fails when
@@ -131,7 +142,7 @@ python: deps
 	$(PYTHON_VENV)/bin/python -c "import sigmoid_neighborhoods as sn; print('sigmoid_neighborhoods', sn.__version__, 'in $(PYTHON_VENV)')"
 
 # The embedded default corpus: the public data of Debian's libcgal-demo.
-corpus: deps
+corpus: deps-evaluate
 	@mkdir -p $(CORPUS_DIR)
 	@[ -f $(CORPUS_DIR)/.extracted ] || { tar -xzf $(CGAL_DATA_ARCHIVE) -C $(CORPUS_DIR) && touch $(CORPUS_DIR)/.extracted; }
 

@@ -10,7 +10,7 @@
 #include "commands.h"
 
 #include "classification/classify_common.h"
-#include "classification/feature_groups.h"
+#include "classification/feature_options.h"
 #include "command_line.h"
 #include "model_input.h"
 

@@ -6,6 +6,7 @@
 // the report of it (experiment.md, .csv, .json, runs.csv, the figure of a test file).
 
 #include "classification/classify_common.h"
+#include "classification/classify_training.h"
 #include "classification/confusion.h"
 #include "classification/feature_groups.h"
 #include "classification/label_mapping.h"

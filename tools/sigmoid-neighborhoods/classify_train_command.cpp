@@ -5,7 +5,8 @@
 // as a model file (classification/classifier_model.h).
 
 #include "classification/classify_common.h"
-#include "classification/feature_groups.h"
+#include "classification/classify_training.h"
+#include "classification/feature_options.h"
 #include "classification/label_mapping.h"
 #include "command_line.h"
 #include "model_input.h"

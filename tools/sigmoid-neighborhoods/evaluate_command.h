@@ -12,7 +12,7 @@
 #include "evaluation_files.h"
 #include "optimal_command.h"
 
-#include <CGAL/Sigmoid_neighborhoods/evaluate_sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/Point_evaluation.h>
 #include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 #include <CGAL/Real_timer.h>
@@ -165,19 +165,10 @@ private:
   std::chrono::steady_clock::time_point m_start;
 };
 
-inline std::vector<SN::Point_evaluation> evaluate_model(const SN::Oriented_point_set& model,
-                                                        const Search_options& o, const Evaluation_settings& s)
-{
-  namespace SNP = SN::parameters;
-  std::vector<SN::Point_evaluation> result;
-  result.reserve(model.points.size());
-  with_model_neighborhoods(model, o, [&](const auto& np) {
-    SN::evaluate_sigmoid_neighborhoods<SN::Parallel_if_available_tag>(
-      point_indices(model.points.size()), std::back_inserter(result),
-      SNP::cut_off_angle(s.cut_off_angle, SNP::fixed_k(s.fixed_k, np)));
-  });
-  return result;
-}
+// The evaluation of every point of `model` (evaluate_command.cpp: instantiated once, for evaluate and
+// report's figure model).
+std::vector<SN::Point_evaluation> evaluate_model(const SN::Oriented_point_set& model, const Search_options& o,
+                                                 const Evaluation_settings& s);
 
 // The optimal CSV's columns, then the other weightings of the evaluation.
 inline void write_evaluation_csv(std::ostream& out, const SN::Oriented_point_set& model,

@@ -6,6 +6,8 @@
 // aside, the feature computation: CGAL's Classification headers compile slowly.
 
 #include "classify_common.h"
+#include "classify_training.h"
+#include "feature_groups.h"
 
 #include "../ply_output.h"
 

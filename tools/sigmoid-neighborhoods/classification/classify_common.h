@@ -4,28 +4,31 @@
 // What the steps of sigmoid-neighborhoods classify share (classify_*_command.cpp): the files read and
 // featured, CGAL's ETHZ random forest trained and applied, the outputs and the line of progress. Their
 // definitions are in classify_common.cpp, the one translation unit that instantiates CGAL's training,
-// classify(), graph-cut, the PLY writer and the feature computation of add_features(). This header needs
-// classifier_model.h for the types the steps hold (Classifier_settings, its Feature_options, the
-// Feature_column of a file), and with it feature_groups.h and the package's headers.
+// classify(), graph-cut, the PLY writer and the feature computation of add_features(). This header is
+// light (no CGAL classification, no feature computation): the training, which holds CGAL's label and
+// feature sets, is declared in classify_training.h.
 
 #ifndef SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_CLASSIFY_COMMON_H
 #define SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_CLASSIFY_COMMON_H
 
-#include "classifier_model.h"
+#include "classifier_settings.h"
 #include "confusion.h"
-#include "feature_groups.h"
+#include "feature_options.h"
 #include "label_mapping.h"
 #include "../command_line.h"
 #include "../model_input.h"
 
-#include <CGAL/Classification/ETHZ/Random_forest_classifier.h>
-#include <CGAL/Classification/Feature_set.h>
-#include <CGAL/Classification/Label_set.h>
-
 #include <cstddef>
-#include <memory>
 #include <string>
 #include <vector>
+
+namespace CGAL {
+namespace Classification {
+namespace ETHZ {
+class Random_forest_classifier;
+} // namespace ETHZ
+} // namespace Classification
+} // namespace CGAL
 
 namespace sigmoid_tool {
 
@@ -71,18 +74,6 @@ Featured_file read_and_feature(const std::string& path, const Label_mapping& lab
                                bool compute_features = true);
 
 typedef CGAL::Classification::ETHZ::Random_forest_classifier Forest;
-
-// Trains a forest on `files`; returns the settings with the feature names in the forest's order.
-struct Trained
-{
-  Classifier_settings settings;
-  CGAL::Classification::Label_set labels;
-  CGAL::Classification::Feature_set features;
-  std::unique_ptr<Forest> forest;
-  double seconds = 0.;
-};
-
-void train(const std::vector<Featured_file>& files, Trained& t);
 
 // The classes of one file under a trained forest, and each class's probability per point.
 struct Prediction

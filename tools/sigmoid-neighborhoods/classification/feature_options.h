@@ -1,0 +1,121 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The feature groups of classify: their names and options (this header, light: every classify
+// subcommand parses them) and what each group needs from the input (neighbors, halo). Their
+// computation is in feature_groups.h.
+
+#ifndef SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_FEATURE_OPTIONS_H
+#define SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_FEATURE_OPTIONS_H
+
+#include "../command_line.h"
+
+#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace sigmoid_tool {
+
+namespace SN = CGAL::Sigmoid_neighborhoods;
+
+
+struct Feature_column
+{
+  std::string name;
+  std::vector<double> values; // one per point
+};
+
+// What the feature groups are computed with.
+struct Feature_options
+{
+  std::vector<std::string> groups;
+  unsigned int fixed_k = 20;                           // group k20 (its name follows fixed_k)
+  unsigned int k_min = SN::DEFAULT_K_MIN, k_max = SN::DEFAULT_K_MAX; // the optimal searches
+  std::vector<unsigned int> scales{10, 25, 50, 100};   // groups multiscale and multiscale-sigmoid
+  double sigmoid_a = CGAL_PI / 6., sigmoid_b = CGAL_PI / 3.; // multiscale-sigmoid's weights
+  std::vector<double> cell_sizes{2.5, 5., 10.};        // group height
+  unsigned int cgal_scales = 5;                        // group cgal
+  unsigned int threads = 0;
+};
+
+inline const char* FEATURE_GROUPS_USAGE =
+  "  --features GROUPS: comma-separated, in any combination (default cgal):\n"
+  "      cgal            CGAL's Point_set_feature_generator on 5 scales (eigenvalues, heights, ...)\n"
+  "      k20             the eigen features (linearity ... normal_z) at k = 20, equal weights\n"
+  "      eigenentropy    the same at the eigenentropy-optimal k of Weinmann et al., equal weights, and k\n"
+  "      dimensionality  the same at the E_dim-optimal k, equal weights, and k\n"
+  "      optimal         the same at the optimal sigmoid triple (a*, b*, k*), and k, a, b, the radius\n"
+  "      multiscale      the eigen features at k = 10, 25, 50, 100, equal weights\n"
+  "      multiscale-sigmoid  the same with the sigmoid weights of --sigmoid A,B (default 30deg,60deg)\n"
+  "      height          z above the lowest point, below the highest and the range in 2.5, 5, 10 m cells\n";
+
+inline const std::vector<std::string>& known_feature_groups()
+{
+  static const std::vector<std::string> groups{"cgal",     "k20",        "eigenentropy",       "dimensionality",
+                                               "optimal", "multiscale", "multiscale-sigmoid", "height"};
+  return groups;
+}
+
+inline std::vector<std::string> parse_feature_groups(const std::string& text)
+{
+  std::vector<std::string> groups;
+  for(const std::string& group : split(text, ','))
+  {
+    const auto& known = known_feature_groups();
+    if(std::find(known.begin(), known.end(), group) == known.end())
+      throw Usage_error("--features: unknown group '" + group +
+                        "': expected cgal, k20, eigenentropy, dimensionality, optimal, multiscale, "
+                        "multiscale-sigmoid or height");
+    if(std::find(groups.begin(), groups.end(), group) != groups.end())
+      throw Usage_error("--features: group '" + group + "' given twice");
+    groups.push_back(group);
+  }
+  return groups;
+}
+
+namespace internal_classification {
+
+inline bool has_group(const Feature_options& o, const char* group)
+{
+  return std::find(o.groups.begin(), o.groups.end(), group) != o.groups.end();
+}
+
+} // namespace internal_classification
+
+// The largest neighborhood the package's groups of `o` need (0: none, CGAL's and the heights only).
+inline unsigned int largest_neighborhood(const Feature_options& o)
+{
+  using internal_classification::has_group;
+  unsigned int k = 0;
+  if(has_group(o, "k20"))
+    k = std::max(k, o.fixed_k);
+  if(has_group(o, "eigenentropy") || has_group(o, "dimensionality") || has_group(o, "optimal"))
+    k = std::max(k, o.k_max);
+  if(has_group(o, "multiscale") || has_group(o, "multiscale-sigmoid"))
+    k = std::max(k, *std::max_element(o.scales.begin(), o.scales.end()));
+  return k;
+}
+
+// The halo the group height needs around a tile (0: none): a cell meeting the tile lies within its
+// side of the tile, so a halo that wide holds every point of the tile's cells. The relative margin
+// covers the rounding of x / side at the cells' borders while |x| / side stays below 10^9.
+inline double cell_halo(const Feature_options& o)
+{
+  if(!internal_classification::has_group(o, "height"))
+    return 0.;
+  return *std::max_element(o.cell_sizes.begin(), o.cell_sizes.end()) * (1. + 1e-6);
+}
+
+// The groups of `o` that depend on the whole point set (the cgal group: CGAL's generator takes its
+// scales from the average spacing and anchors its grids at the bounding box), so that a tile with
+// any halo gets other values than the union: "" when there is none.
+inline std::string whole_set_groups(const Feature_options& o)
+{
+  return internal_classification::has_group(o, "cgal") ? "cgal" : "";
+}
+
+} // namespace sigmoid_tool
+
+#endif // SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_FEATURE_OPTIONS_H
