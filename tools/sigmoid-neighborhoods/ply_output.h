@@ -53,17 +53,7 @@ inline const char* COLOR_USAGE =
   "  --color error|label|none: the PLY's vertex colors (default error): E_dim over [0, ln 3] through viridis\n"
   "      (failures gray), or by label (linear vermillion, planar blue, scattered yellow, degenerate gray)\n";
 
-inline Ply_colors read_ply_colors(const Arguments& args)
-{
-  const std::string text = args.get("--color", "error");
-  if(text == "error")
-    return Ply_colors::ERROR;
-  if(text == "label")
-    return Ply_colors::LABEL;
-  if(text == "none")
-    return Ply_colors::NONE;
-  throw Usage_error("--color must be error, label or none, got '" + text + "'");
-}
+Ply_colors read_ply_colors(const Arguments& args);
 
 typedef std::array<std::uint8_t, 3> Rgb;
 
@@ -94,38 +84,13 @@ constexpr std::array<std::array<float, 3>, 52> VIRIDIS_SAMPLES = {{
 }};
 
 // Viridis at t in [0, 1] (clamped).
-inline Rgb viridis(double t)
-{
-  const double at = std::clamp(t, 0., 1.) * double(VIRIDIS_SAMPLES.size() - 1);
-  const std::size_t i = std::min<std::size_t>(std::size_t(at), VIRIDIS_SAMPLES.size() - 2);
-  const double f = at - double(i);
-  Rgb rgb;
-  for(std::size_t c = 0; c < 3; ++c)
-  {
-    const double v = (1. - f) * VIRIDIS_SAMPLES[i][c] + f * VIRIDIS_SAMPLES[i + 1][c];
-    rgb[c] = std::uint8_t(std::lround(255. * v));
-  }
-  return rgb;
-}
+Rgb viridis(double t);
 
 // E_dim over its range [0, ln 3]; gray for a failure (infinite or NaN error).
-inline Rgb error_color(double error)
-{
-  return std::isfinite(error) ? viridis(error / std::log(3.)) : FAILURE_GRAY;
-}
+Rgb error_color(double error);
 
 // The Okabe-Ito colors, told apart with every common color vision deficiency.
-inline Rgb label_color(CGAL::Sigmoid_neighborhoods::Dimensionality label)
-{
-  typedef CGAL::Sigmoid_neighborhoods::Dimensionality D;
-  switch(label)
-  {
-  case D::LINEAR: return {213, 94, 0};      // vermillion
-  case D::PLANAR: return {0, 114, 178};     // blue
-  case D::SCATTERED: return {240, 228, 66}; // yellow
-  default: return FAILURE_GRAY;             // degenerate
-  }
-}
+Rgb label_color(CGAL::Sigmoid_neighborhoods::Dimensionality label);
 
 // The per-vertex `quality` (float: MeshLab's type) and, unless `colors` is NONE, `red green blue`.
 class Ply_viewer_properties
@@ -160,12 +125,7 @@ private:
 };
 
 // A binary little-endian PLY with every property of `ps` in the order it was added.
-inline void write_binary_ply(std::ostream& out, const Ply_point_set& ps)
-{
-  CGAL::IO::set_binary_mode(out);
-  if(!CGAL::IO::write_PLY(out, ps))
-    throw Usage_error("cannot write the PLY file");
-}
+void write_binary_ply(std::ostream& out, const Ply_point_set& ps);
 
 } // namespace sigmoid_tool
 
