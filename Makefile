@@ -87,8 +87,8 @@ test: build doc test-deps
 # long end-to-end reruns of code the tests cover (label long: the denoising tables, the tiled
 # classification; the tiles' halos on LAS are the Catch2 [catalog] tests') and the tests that only
 # compile (label compile_only), so that it and 'make test' fit in CI's time. -O2 as the release
-# build, and line tables only (-g1): enough for the sanitizers' stack traces, without the full
-# debug information of CGAL's templates, which doubled the build's time.
+# build, and line tables only (-g1): file and line in the sanitizers' stack traces, without the
+# full debug information of CGAL's templates, which is slow to write and link.
 SANITIZE_DIR ?= build-sanitize
 sanitize: deps
 	cmake -S . -B $(SANITIZE_DIR) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" \

@@ -24,8 +24,9 @@ ParallelCompile("NPY_NUM_BUILD_JOBS").install()
 
 core = Pybind11Extension(
     "sigmoid_neighborhoods._core",
-    # the module's translation units and the readers, compiled once (CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO)
-    sorted(str(p.relative_to(HERE)) for p in (HERE / "src").glob("*.cpp")) + ["../src/Sigmoid_neighborhoods/IO.cpp"],
+    # the readers, compiled once (CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO), first: the longest unit
+    # starts while the module's compile beside it
+    ["../src/Sigmoid_neighborhoods/IO.cpp"] + sorted(str(p.relative_to(HERE)) for p in (HERE / "src").glob("*.cpp")),
     include_dirs=[str(REPOSITORY / "include"), "/usr/include/eigen3"],
     define_macros=[("NDEBUG", None), ("CGAL_EIGEN3_ENABLED", None), ("CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO", None), ("SIGMOID_NEIGHBORHOODS_VERSION", f'"{VERSION}"')],
     # the flags of the CMake build (Release): the same code as the C++ library's tests check
