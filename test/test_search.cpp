@@ -7,6 +7,8 @@
 #include "test_models.h"
 
 #include <CGAL/Sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/Normal_options.h>
+#include <CGAL/Sigmoid_neighborhoods/Normal_estimation_method.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -295,6 +297,31 @@ TEST_CASE("eigenentropy: analytic values, scale invariance, no additive constant
   CHECK(SN::criterion_from_name("eigenentropy") == SN::Neighborhood_criterion::EIGENENTROPY);
   CHECK(std::string(SN::criterion_name(SN::Neighborhood_criterion::DIMENSIONALITY)) == "dimensionality");
   CHECK_THROWS_WITH(SN::criterion_from_name("entropy"), Catch::Contains("expected dimensionality or eigenentropy"));
+}
+
+// The names the tool and the Python module parse: each value's name gives it back, and any other
+// name is refused with the names expected.
+TEST_CASE("option names: every value round-trips, others are refused", "[names]")
+{
+  for(SN::Barycenter b : {SN::Barycenter::WEIGHTED, SN::Barycenter::UNWEIGHTED})
+    CHECK(SN::barycenter_from_name(SN::barycenter_name(b)) == b);
+  CHECK(std::string(SN::barycenter_name(SN::Barycenter::UNWEIGHTED)) == "unweighted");
+  CHECK_THROWS_WITH(SN::barycenter_from_name("Weighted"), Catch::Contains("expected weighted or unweighted"));
+  for(SN::Normal_estimation_method m : {SN::Normal_estimation_method::PCA, SN::Normal_estimation_method::JET})
+    CHECK(SN::normal_estimation_method_from_name(SN::normal_estimation_method_name(m)) == m);
+  CHECK(std::string(SN::normal_estimation_method_name(SN::Normal_estimation_method::JET)) == "jet");
+  CHECK_THROWS_WITH(SN::normal_estimation_method_from_name("svd"), Catch::Contains("expected pca or jet"));
+  for(SN::Normal_source s : {SN::Normal_source::AUTO, SN::Normal_source::FROM_FILE, SN::Normal_source::PCA,
+                             SN::Normal_source::JET})
+    CHECK(SN::normal_source_from_name(SN::normal_source_name(s)) == s);
+  CHECK(std::string(SN::normal_source_name(SN::Normal_source::FROM_FILE)) == "file");
+  CHECK_THROWS_WITH(SN::normal_source_from_name(""), Catch::Contains("expected auto, file, pca or jet"));
+  for(SN::Normal_orientation o : {SN::Normal_orientation::SPANNING_FOREST, SN::Normal_orientation::VIEWPOINT,
+                                  SN::Normal_orientation::UPWARD, SN::Normal_orientation::NONE})
+    CHECK(SN::normal_orientation_from_name(SN::normal_orientation_name(o)) == o);
+  CHECK(std::string(SN::normal_orientation_name(SN::Normal_orientation::UPWARD)) == "up");
+  CHECK_THROWS_WITH(SN::normal_orientation_from_name("spanning_forest"),
+                    Catch::Contains("expected mst, viewpoint, up or none"));
 }
 
 TEST_CASE("eigenentropy criterion: the search equals the plain loop", "[optimal][criterion]")

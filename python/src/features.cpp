@@ -26,15 +26,6 @@ typedef SN::Parallel_if_available_tag Tag;
 
 namespace {
 
-SN::Barycenter barycenter_from_name(const std::string& name)
-{
-  if(name == "weighted")
-    return SN::Barycenter::WEIGHTED;
-  if(name == "unweighted")
-    return SN::Barycenter::UNWEIGHTED;
-  throw std::invalid_argument("unknown barycenter '" + name + "': expected weighted or unweighted");
-}
-
 // Named result arrays of shape `shape` (+ (3,) for the eigenvalues), allocated before the GIL is
 // released and written through raw pointers while it is.
 class Columns
@@ -133,7 +124,7 @@ py::dict features(const py::object& points_object, const py::object& normals_obj
   const unsigned int largest = *std::max_element(sizes.begin(), sizes.end());
   const SN::Cosine_sigmoid sigmoid(a, b, angle_tolerance);
   const auto np = SNP::barycenter(
-    barycenter_from_name(barycenter),
+    SN::barycenter_from_name(barycenter),
     SNP::line_angles(line_angles, SNP::number_of_threads(threads_of(threads), CGAL::parameters::point_map(Point_rows_map{&points})
                                                                                 .normal_map(Vector_rows_map{&normals}))));
   const std::optional<Neighbor_rows> rows = neighbor_rows(neighbors, points, largest);
@@ -183,7 +174,7 @@ py::dict optimal(const py::object& points_object, const py::object& normals_obje
   const auto grid = SNP::a_grid(a_grid ? *a_grid : SN::default_angle_grid(),
                                 SNP::b_grid(b_grid ? *b_grid : SN::default_angle_grid(), weights));
   const auto np = SNP::k_min(
-    k_min, SNP::k_max(k_max, SNP::barycenter(barycenter_from_name(barycenter), SNP::criterion(minimised, grid))));
+    k_min, SNP::k_max(k_max, SNP::barycenter(SN::barycenter_from_name(barycenter), SNP::criterion(minimised, grid))));
   const std::optional<Neighbor_rows> rows = neighbor_rows(neighbors, points, k_max);
   const std::size_t n = points.size();
   Columns columns({py::ssize_t(n)});

@@ -28,28 +28,6 @@ typedef SN::Parallel_if_available_tag Tag;
 
 namespace {
 
-SN::Normal_orientation orientation_from_name(const std::string& name)
-{
-  if(name == "mst")
-    return SN::Normal_orientation::SPANNING_FOREST;
-  if(name == "viewpoint")
-    return SN::Normal_orientation::VIEWPOINT;
-  if(name == "up")
-    return SN::Normal_orientation::UPWARD;
-  if(name == "none")
-    return SN::Normal_orientation::NONE;
-  throw std::invalid_argument("unknown orientation '" + name + "': expected mst, viewpoint, up or none");
-}
-
-SN::Normal_estimation_method method_from_name(const std::string& name)
-{
-  if(name == "pca")
-    return SN::Normal_estimation_method::PCA;
-  if(name == "jet")
-    return SN::Normal_estimation_method::JET;
-  throw std::invalid_argument("unknown normal estimation method '" + name + "': expected pca or jet");
-}
-
 SN::Oriented_point_set::Point_3 viewpoint_of(const py::object& viewpoint, SN::Normal_orientation orientation)
 {
   if(viewpoint.is_none())
@@ -77,18 +55,9 @@ py::dict read(const py::object& path, const std::string& normals, unsigned int k
 {
   const std::string filename = py::module_::import("os").attr("fspath")(path).cast<std::string>();
   SN::Normal_options options;
-  if(normals == "auto")
-    options.source = SN::Normal_source::AUTO;
-  else if(normals == "file")
-    options.source = SN::Normal_source::FROM_FILE;
-  else if(normals == "pca")
-    options.source = SN::Normal_source::PCA;
-  else if(normals == "jet")
-    options.source = SN::Normal_source::JET;
-  else
-    throw std::invalid_argument("unknown normals '" + normals + "': expected auto, file, pca or jet");
+  options.source = SN::normal_source_from_name(normals);
   options.neighbors = k;
-  options.orientation = orientation_from_name(orientation);
+  options.orientation = SN::normal_orientation_from_name(orientation);
   options.viewpoint = viewpoint_of(viewpoint, options.orientation);
   options.threads = threads_of(threads);
   SN::Oriented_point_set set;
@@ -151,8 +120,8 @@ py::array_t<double> estimate_normals(const py::object& points_object, unsigned i
                                      const py::object& neighbors, const std::optional<int>& threads)
 {
   const Rows_3 points(points_object, "points");
-  const SN::Normal_estimation_method method = method_from_name(method_name);
-  const SN::Normal_orientation orientation = orientation_from_name(orientation_name);
+  const SN::Normal_estimation_method method = SN::normal_estimation_method_from_name(method_name);
+  const SN::Normal_orientation orientation = SN::normal_orientation_from_name(orientation_name);
   const SN::Oriented_point_set::Point_3 viewpoint = viewpoint_of(viewpoint_object, orientation);
   const unsigned int thread_count = threads_of(threads);
   const std::size_t n = points.size();

@@ -292,7 +292,7 @@ inline int run_evaluate(int argc, char** argv)
   settings.fixed_k = args.get_unsigned("--fixed-k", options.k_max);
   if(settings.fixed_k < options.k_min || settings.fixed_k > options.k_max)
     throw Usage_error("--fixed-k must lie in [--k-min, --k-max]");
-  settings.barycenter = options.barycenter == SN::Barycenter::WEIGHTED ? "weighted" : "unweighted";
+  settings.barycenter = SN::barycenter_name(options.barycenter);
   settings.angle_tolerance = options.angle_tolerance;
   settings.cut_off_angle = std::acos(EVALUATION_CUT_OFF_COSINE);
   settings.a_grid = options.a_grid; // sorted and deduplicated, as the statistics keep them

@@ -9,15 +9,14 @@ namespace sigmoid_tool {
 
 SN::Normal_source read_normal_source(const std::string& text)
 {
-  if(text == "auto")
-    return SN::Normal_source::AUTO;
-  if(text == "file")
-    return SN::Normal_source::FROM_FILE;
-  if(text == "pca")
-    return SN::Normal_source::PCA;
-  if(text == "jet")
-    return SN::Normal_source::JET;
-  throw Usage_error("--normals must be auto, file, pca or jet, got '" + text + "'");
+  try
+  {
+    return SN::normal_source_from_name(text);
+  }
+  catch(const std::invalid_argument&)
+  {
+    throw Usage_error("--normals must be auto, file, pca or jet, got '" + text + "'");
+  }
 }
 
 SN::Normal_options read_normal_options(const Arguments& args)
@@ -33,16 +32,14 @@ SN::Normal_options read_normal_options(const Arguments& args)
     throw Usage_error("--normal-neighbors must be at least " + std::to_string(fewest) + " for " +
                       (method == SN::Normal_estimation_method::PCA ? "pca" : "jet fitting (degree 2)"));
   const std::string orientation = args.get("--orientation", args.has("--viewpoint") ? "viewpoint" : "mst");
-  if(orientation == "mst")
-    o.orientation = SN::Normal_orientation::SPANNING_FOREST;
-  else if(orientation == "viewpoint")
-    o.orientation = SN::Normal_orientation::VIEWPOINT;
-  else if(orientation == "none")
-    o.orientation = SN::Normal_orientation::NONE;
-  else if(orientation == "up")
-    o.orientation = SN::Normal_orientation::UPWARD;
-  else
+  try
+  {
+    o.orientation = SN::normal_orientation_from_name(orientation);
+  }
+  catch(const std::invalid_argument&)
+  {
     throw Usage_error("--orientation must be mst, viewpoint, up or none, got '" + orientation + "'");
+  }
   if(o.orientation == SN::Normal_orientation::VIEWPOINT)
   {
     if(!args.has("--viewpoint"))
@@ -79,17 +76,11 @@ SN::Oriented_point_set read_model(const std::string& path, unsigned int k_max,
 std::string normal_source_name(const SN::Oriented_point_set& model)
 {
   if(model.normals_estimated)
-    return model.estimation_method == SN::Normal_estimation_method::JET ? "jet" : "pca";
+    return SN::normal_estimation_method_name(model.estimation_method);
   return model.is_mesh ? "mesh" : "file";
 }
 
-std::string orientation_name(SN::Normal_orientation orientation)
-{
-  return orientation == SN::Normal_orientation::SPANNING_FOREST ? "mst"
-         : orientation == SN::Normal_orientation::VIEWPOINT   ? "viewpoint"
-         : orientation == SN::Normal_orientation::UPWARD      ? "up"
-                                                                 : "none";
-}
+std::string orientation_name(SN::Normal_orientation orientation) { return SN::normal_orientation_name(orientation); }
 
 std::string model_description(const SN::Oriented_point_set& model)
 {

@@ -66,10 +66,14 @@ inline Search_options read_search_options(const Arguments& args)
   if(o.k_min < 1 || o.k_min > o.k_max)
     throw Usage_error("needs 1 <= --k-min <= --k-max");
   const std::string bary = args.get("--barycenter", "weighted");
-  if(bary == "unweighted")
-    o.barycenter = SN::Barycenter::UNWEIGHTED;
-  else if(bary != "weighted")
+  try
+  {
+    o.barycenter = SN::barycenter_from_name(bary);
+  }
+  catch(const std::invalid_argument&)
+  {
     throw Usage_error("--barycenter must be weighted or unweighted, got '" + bary + "'");
+  }
   o.angle_tolerance = read_angle_tolerance(args, o.angle_tolerance);
   o.threads = read_threads(args);
   o.line_angles = read_line_angles(args);

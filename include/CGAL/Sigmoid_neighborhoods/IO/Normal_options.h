@@ -9,6 +9,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Origin.h>
 
+#include <stdexcept>
+#include <string>
+
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
@@ -42,6 +45,54 @@ enum class Normal_orientation
   UPWARD,          ///< every normal towards `+z` (`n_z >= 0`), as an airborne scanner sees the surfaces
   NONE             ///< as estimated: signs arbitrary (for the named parameter `line_angles`)
 };
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  the name of a source on the command line and in Python: `auto`, `file`, `pca` or `jet`.
+*/
+inline const char* normal_source_name(Normal_source s)
+{
+  return s == Normal_source::FROM_FILE ? "file" : s == Normal_source::PCA ? "pca" : s == Normal_source::JET ? "jet" : "auto";
+}
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  the source named `name` (`auto`, `file`, `pca` or `jet`).
+  \throws std::invalid_argument for any other name
+*/
+inline Normal_source normal_source_from_name(const std::string& name)
+{
+  for(Normal_source s : {Normal_source::AUTO, Normal_source::FROM_FILE, Normal_source::PCA, Normal_source::JET})
+    if(name == normal_source_name(s))
+      return s;
+  throw std::invalid_argument("unknown normals '" + name + "': expected auto, file, pca or jet");
+}
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  the name of an orientation on the command line and in Python: `mst`, `viewpoint`, `up` or `none`.
+*/
+inline const char* normal_orientation_name(Normal_orientation o)
+{
+  return o == Normal_orientation::SPANNING_FOREST ? "mst"
+         : o == Normal_orientation::VIEWPOINT     ? "viewpoint"
+         : o == Normal_orientation::UPWARD        ? "up"
+                                                   : "none";
+}
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  the orientation named `name` (`mst`, `viewpoint`, `up` or `none`).
+  \throws std::invalid_argument for any other name
+*/
+inline Normal_orientation normal_orientation_from_name(const std::string& name)
+{
+  for(Normal_orientation o : {Normal_orientation::SPANNING_FOREST, Normal_orientation::VIEWPOINT,
+                              Normal_orientation::UPWARD, Normal_orientation::NONE})
+    if(name == normal_orientation_name(o))
+      return o;
+  throw std::invalid_argument("unknown orientation '" + name + "': expected mst, viewpoint, up or none");
+}
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsIO

@@ -55,7 +55,8 @@ namespace Sigmoid_neighborhoods {
   \throws std::invalid_argument on options no file can satisfy: `options.neighbors` below what the
   method needs (2 for PCA, 5 for jet fitting; 0 is allowed with `Normal_source::AUTO` only).
 */
-CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Oriented_point_set read_oriented_point_set(const std::string& filename, const Normal_options& options);
+CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Oriented_point_set
+read_oriented_point_set(const std::string& filename, const Normal_options& options);
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsIO

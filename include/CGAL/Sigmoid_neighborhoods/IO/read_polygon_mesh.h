@@ -32,7 +32,8 @@ namespace Sigmoid_neighborhoods {
   file, an unknown extension, a syntax error, non-finite coordinates, no faces, faces that do not
   form a polygon mesh.
 */
-CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION void read_polygon_mesh(const std::string& filename, CGAL::Surface_mesh<Oriented_point_set::Point_3>& mesh);
+CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION void
+read_polygon_mesh(const std::string& filename, CGAL::Surface_mesh<Oriented_point_set::Point_3>& mesh);
 
 } // namespace Sigmoid_neighborhoods
 } // namespace CGAL

@@ -32,7 +32,8 @@ namespace Sigmoid_neighborhoods {
   \throws Input_error when the catalog is empty, a file is unreadable or compressed (LAZ), or two
   tiles have one name
 */
-CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Tile_catalog read_tile_catalog(const std::string& folder_or_list);
+CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Tile_catalog
+read_tile_catalog(const std::string& folder_or_list);
 
 } // namespace Sigmoid_neighborhoods
 } // namespace CGAL

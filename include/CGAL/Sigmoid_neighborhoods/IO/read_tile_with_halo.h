@@ -67,7 +67,8 @@ struct Halo_options
   \throws Input_error on an unusable tile (prefixed with its file), tiles whose per-point fields
   differ, a point outside its tile's extent, fewer points than the estimation needs.
 */
-CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Oriented_point_set read_catalog_union(const Tile_catalog& catalog, const Normal_options& options);
+CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Oriented_point_set
+read_catalog_union(const Tile_catalog& catalog, const Normal_options& options);
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsIO
@@ -107,8 +108,9 @@ CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Oriented_point_set read_catalog_union(con
   \throws std::invalid_argument when `tile` is not a position in `catalog.tiles`, `k` is 0 or a
   width of `halo` is negative or not finite
 */
-CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size_t tile, unsigned int k,
-                                          const Normal_options& options, const Halo_options& halo = Halo_options());
+CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Tile_with_halo
+read_tile_with_halo(const Tile_catalog& catalog, std::size_t tile, unsigned int k,
+                    const Normal_options& options, const Halo_options& halo = Halo_options());
 
 } // namespace Sigmoid_neighborhoods
 } // namespace CGAL

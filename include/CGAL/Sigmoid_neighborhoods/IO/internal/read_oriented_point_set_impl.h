@@ -32,7 +32,8 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
-CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Oriented_point_set read_oriented_point_set(const std::string& filename, const Normal_options& options)
+CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Oriented_point_set
+read_oriented_point_set(const std::string& filename, const Normal_options& options)
 {
   const bool may_skip_estimation = options.source == Normal_source::AUTO && options.neighbors == 0;
   const unsigned int fewest = internal::fewest_estimation_neighbors(internal::estimation_method(options.source));

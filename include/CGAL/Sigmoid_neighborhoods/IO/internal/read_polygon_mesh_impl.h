@@ -28,7 +28,8 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
-CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION void read_polygon_mesh(const std::string& filename, CGAL::Surface_mesh<Oriented_point_set::Point_3>& mesh)
+CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION void
+read_polygon_mesh(const std::string& filename, CGAL::Surface_mesh<Oriented_point_set::Point_3>& mesh)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   const internal::Input_file file =

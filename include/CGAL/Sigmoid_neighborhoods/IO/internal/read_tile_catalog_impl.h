@@ -85,7 +85,8 @@ inline std::vector<std::string> list_tile_folder(const std::string& folder)
 
 } // namespace internal
 
-CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Tile_catalog read_tile_catalog(const std::string& folder_or_list)
+CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Tile_catalog
+read_tile_catalog(const std::string& folder_or_list)
 {
   std::error_code ec;
   const bool is_folder = std::filesystem::is_directory(folder_or_list, ec);

@@ -193,15 +193,17 @@ inline double sufficient_halo_width(const Oriented_point_set& s, std::pair<std::
 
 } // namespace internal
 
-CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Oriented_point_set read_catalog_union(const Tile_catalog& catalog, const Normal_options& options)
+CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Oriented_point_set
+read_catalog_union(const Tile_catalog& catalog, const Normal_options& options)
 {
   internal::Catalog_points read = internal::read_catalog_points(catalog, nullptr);
   internal::finish_catalog_points(read, options);
   return std::move(read.set);
 }
 
-CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Tile_with_halo read_tile_with_halo(const Tile_catalog& catalog, std::size_t tile, unsigned int k,
-                                          const Normal_options& options, const Halo_options& halo)
+CGAL_SIGMOID_NEIGHBORHOODS_IO_FUNCTION Tile_with_halo
+read_tile_with_halo(const Tile_catalog& catalog, std::size_t tile, unsigned int k,
+                    const Normal_options& options, const Halo_options& halo)
 {
   if(tile >= catalog.tiles.size())
     throw std::invalid_argument("read_tile_with_halo: tile " + std::to_string(tile) + " of a catalog of " +
