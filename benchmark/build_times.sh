@@ -15,6 +15,8 @@
 #
 #   benchmark/build_times.sh [--ci] [WORKDIR]     (default WORKDIR: /tmp/sn-build-times)
 set -euo pipefail
+# The whole script is read before it runs (one block): it goes on even if the file changes meanwhile.
+{
 run_ci=0
 if [ "${1:-}" = "--ci" ]; then run_ci=1; shift; fi
 repo=$(cd "$(dirname "$0")/.." && pwd)
@@ -123,3 +125,5 @@ if [ "$run_ci" = 1 ]; then
   seconds ci .ci/run; row ".ci/run (cold sanitizer build, then make test on the warm release build)" "$(cat "$work/ci.seconds")"
 fi
 echo "Table: $table"
+exit
+}
