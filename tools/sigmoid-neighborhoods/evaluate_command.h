@@ -225,7 +225,7 @@ inline Model_result model_result(const Model_file& file, const SN::Oriented_poin
   {
     m.normal_method = normal_source_name(model);
     m.normal_neighbors = model.estimation_neighbors;
-    m.orientation = orientation_name(model.orientation);
+    m.orientation = SN::normal_orientation_name(model.orientation);
     m.normal_components = model.orientation_components;
   }
   m.zero_normals = model.zero_normals;

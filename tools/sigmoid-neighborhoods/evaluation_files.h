@@ -15,12 +15,9 @@ namespace sigmoid_tool {
 
 inline void set_normal_settings(Evaluation_settings& s, const SN::Normal_options& o, bool line_angles)
 {
-  s.normals = o.source == SN::Normal_source::AUTO        ? "auto"
-              : o.source == SN::Normal_source::FROM_FILE ? "file"
-              : o.source == SN::Normal_source::JET       ? "jet"
-                                                         : "pca";
+  s.normals = SN::normal_source_name(o.source);
   s.normal_neighbors = o.neighbors;
-  s.orientation = orientation_name(o.orientation);
+  s.orientation = SN::normal_orientation_name(o.orientation);
   s.viewpoint.clear();
   if(o.orientation == SN::Normal_orientation::VIEWPOINT)
     s.viewpoint = {o.viewpoint.x(), o.viewpoint.y(), o.viewpoint.z()};
@@ -33,10 +30,9 @@ inline SN::Normal_options normal_options(const Evaluation_settings& s, unsigned 
   SN::Normal_options o;
   o.source = s.normals.empty() ? SN::Normal_source::AUTO : read_normal_source(s.normals);
   o.neighbors = s.normal_neighbors == 0 ? SN::DEFAULT_ESTIMATION_NEIGHBORS : s.normal_neighbors;
-  o.orientation = s.orientation == "viewpoint" ? SN::Normal_orientation::VIEWPOINT
-                  : s.orientation == "none"    ? SN::Normal_orientation::NONE
-                  : s.orientation == "up"      ? SN::Normal_orientation::UPWARD
-                                               : SN::Normal_orientation::SPANNING_FOREST;
+  // read_settings() gave one of the names, or none for the default
+  o.orientation = s.orientation.empty() ? SN::Normal_orientation::SPANNING_FOREST
+                                        : SN::normal_orientation_from_name(s.orientation);
   if(s.viewpoint.size() == 3)
     o.viewpoint = SN::Oriented_point_set::Point_3(s.viewpoint[0], s.viewpoint[1], s.viewpoint[2]);
   o.threads = threads;

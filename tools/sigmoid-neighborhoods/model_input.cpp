@@ -80,8 +80,6 @@ std::string normal_source_name(const SN::Oriented_point_set& model)
   return model.is_mesh ? "mesh" : "file";
 }
 
-std::string orientation_name(SN::Normal_orientation orientation) { return SN::normal_orientation_name(orientation); }
-
 std::string model_description(const SN::Oriented_point_set& model)
 {
   std::string s = std::to_string(model.points.size()) + " points (";

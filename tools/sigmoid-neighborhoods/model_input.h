@@ -73,7 +73,6 @@ SN::Oriented_point_set read_model(const std::string& path, unsigned int k_max,
 // "pca", "jet", "file" or "mesh": where the normals of `model` come from.
 std::string normal_source_name(const SN::Oriented_point_set& model);
 
-std::string orientation_name(SN::Normal_orientation orientation);
 
 std::string model_description(const SN::Oriented_point_set& model);
 

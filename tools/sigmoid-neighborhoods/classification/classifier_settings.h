@@ -46,7 +46,7 @@ inline nlohmann::json settings_json(const Classifier_settings& s)
                    {"cell_sizes", s.features.cell_sizes}, {"cgal_scales", s.features.cgal_scales}};
   j["normals"] = {{"source", s.normals.source == SN::Normal_source::JET ? "jet" : "pca"},
                   {"neighbors", s.normals.neighbors},
-                  {"orientation", orientation_name(s.normals.orientation)},
+                  {"orientation", SN::normal_orientation_name(s.normals.orientation)},
                   {"viewpoint", {s.normals.viewpoint.x(), s.normals.viewpoint.y(), s.normals.viewpoint.z()}}};
   j["feature_names"] = s.feature_names;
   j["trees"] = s.trees;
@@ -97,11 +97,14 @@ inline Classifier_settings settings_from_json(const nlohmann::json& j, const std
     if(s.normals.neighbors < 5 || s.normals.neighbors > largest_k)
       throw bad("normal neighbors out of range");
     const std::string orientation = n.at("orientation").get<std::string>();
-    s.normals.orientation = orientation == "mst"         ? SN::Normal_orientation::SPANNING_FOREST
-                            : orientation == "viewpoint" ? SN::Normal_orientation::VIEWPOINT
-                            : orientation == "up"        ? SN::Normal_orientation::UPWARD
-                            : orientation == "none"      ? SN::Normal_orientation::NONE
-                                                         : throw bad("unknown orientation '" + orientation + "'");
+    try
+    {
+      s.normals.orientation = SN::normal_orientation_from_name(orientation);
+    }
+    catch(const std::invalid_argument&)
+    {
+      throw bad("unknown orientation '" + orientation + "'");
+    }
     const std::vector<double> v = n.at("viewpoint").get<std::vector<double>>();
     if(v.size() != 3)
       throw bad("the viewpoint is not three numbers");

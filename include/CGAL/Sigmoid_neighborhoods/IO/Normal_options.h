@@ -52,7 +52,10 @@ enum class Normal_orientation
 */
 inline const char* normal_source_name(Normal_source s)
 {
-  return s == Normal_source::FROM_FILE ? "file" : s == Normal_source::PCA ? "pca" : s == Normal_source::JET ? "jet" : "auto";
+  return s == Normal_source::FROM_FILE ? "file"
+         : s == Normal_source::PCA     ? "pca"
+         : s == Normal_source::JET     ? "jet"
+                                       : "auto";
 }
 
 /*!
