@@ -112,6 +112,10 @@ fuzz: deps
 	cmake --build $(FUZZ_DIR) --target fuzz_read_and_optimal -j $(JOBS)
 	@mkdir -p $(FUZZ_DIR)/corpus $(FUZZ_DIR)/artifacts $(FUZZ_DIR)/tmp && rm -f $(FUZZ_DIR)/tmp/*
 	cp test/fuzz/seeds/* $(FUZZ_DIR)/corpus/
+	@# LAZ seeds: the small files of ../shared/data/laz, behind a selector byte (never copied into the project)
+	@if [ -d ../shared/data/laz ]; then for f in ../shared/data/laz/*.laz; do \
+	  [ "$$(stat -c %s "$$f")" -le 65536 ] && { printf '\000'; cat "$$f"; } > $(FUZZ_DIR)/corpus/laz_$$(basename "$$f"); \
+	done; true; fi
 	TMPDIR=$(CURDIR)/$(FUZZ_DIR)/tmp ASAN_OPTIONS=quarantine_size_mb=64 \
 	UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1:suppressions=$(CURDIR)/test/fuzz/ubsan_suppressions.txt \
 	  $(FUZZ_DIR)/test/fuzz/fuzz_read_and_optimal $(FUZZ_DIR)/corpus -max_total_time=$(FUZZ_SECONDS) \

@@ -736,7 +736,7 @@ TEST_CASE("IO: the dispatcher's errors", "[io][bad-input]")
   CHECK(read_error(path("io_missing.xyz")) == "cannot open the file");
   CHECK(read_error(scratch()) == "is a folder, not a file");
   CHECK(read_error(empty_off()) == "the file is empty");
-  CHECK(read_error(path("io_model.xyzw")) == "unknown format '.xyzw': expected .off, .obj, .ply, .stl, .xyz, .pwn or .las");
+  CHECK(read_error(path("io_model.xyzw")) == "unknown format '.xyzw': expected .off, .obj, .ply, .stl, .xyz, .pwn, .las or .laz");
   CHECK(read_error(path("io_noext")).find("unknown format '(no extension)'") == 0);
   CHECK(read_error(path("io_faceless.obj")).find("cannot parse the file as obj, or it has no faces") == 0);
   CHECK(read_error(faceless_stl()) == "no faces in the file");

@@ -192,7 +192,7 @@ duplicates are merged, the first kept with its label and LAS fields.
 Parameters
 ----------
 path : str or os.PathLike
-    the file; its extension (any case) selects the format: .off .obj .ply .stl .xyz .pwn .las
+    the file; its extension (any case) selects the format: .off .obj .ply .stl .xyz .pwn .las .laz
 normals : {"auto", "file", "pca", "jet"}
     "auto": the file's, estimated when it has none (k = 0: not estimated, normals is None);
     "file": the file's, an error without; "pca", "jet": estimated, the file's ignored
@@ -204,7 +204,7 @@ orientation : {"mst", "viewpoint", "up", "none"}
 viewpoint : (x, y, z), optional
     for orientation="viewpoint"
 threads : int, optional
-    threads of the estimation (None: OpenMP's default)
+    threads of the LAZ decoding and the estimation (None: OpenMP's default)
 
 Returns
 -------
@@ -216,7 +216,7 @@ uint8, "gps_time" float64 (LAS) or None; "is_mesh", "normals_estimated" (bool);
 Raises
 ------
 OSError
-    a missing, unreadable, empty or malformed file, LAZ, non-finite coordinates, zero normals, no points,
+    a missing, unreadable, empty or malformed file, damaged LAZ or wave packets, non-finite coordinates, zero normals, no points,
     no normals with normals="file", too few points to estimate normals; the message is the reader's
 ValueError
     unknown option values, k below what the estimation needs

@@ -63,8 +63,10 @@ struct Las_format_error : std::runtime_error
 
 inline std::string laz_refusal()
 {
-  return "LAZ (compressed LAS) is not read: decompress it first, e.g. 'laszip -i FILE.laz -o FILE.las' or "
-         "'pdal translate FILE.laz FILE.las'";
+  // The tiles are the input's records copied with its header: a LAZ input would need LASzip's
+  // record dropped and its points decoded first, which the other commands do and retile does not.
+  return "catalog retile copies the records of an uncompressed LAS file: decompress a LAZ file first, e.g. "
+         "'laszip -i FILE.laz -o FILE.las' or 'pdal translate FILE.laz FILE.las'";
 }
 
 template <typename T>

@@ -19,7 +19,7 @@ namespace Sigmoid_neighborhoods {
 /*!
   \ingroup PkgSigmoidNeighborhoodsIO
   \brief reads a mesh (OFF, PLY, OBJ, STL) or a point set (XYZ/PWN lines `x y z [nx ny nz]`,
-  PLY with or without `nx ny nz`, OFF without faces, uncompressed LAS) into distinct points with
+  PLY with or without `nx ny nz`, OFF without faces, LAS and LAZ) into distinct points with
   oriented unit normals, as SPEC §1 prescribes.
 
   Meshes: one point per vertex that has a face, its normal from
@@ -28,8 +28,10 @@ namespace Sigmoid_neighborhoods {
   Point sets: duplicates merged, the first kept, with its label and LAS fields.
   LAS 1.0 to 1.4, point data formats 0 to 10: the points (`X * scale + offset` in double) without
   normals, the classification in `Oriented_point_set::labels`, and the intensity, return number,
-  number of returns and GPS time (formats other than 0 and 2) in the other per-point vectors; LAZ
-  (compressed LAS, a `.laz` file or a compressed point data format) is refused with how to decompress it.
+  number of returns and GPS time (formats other than 0 and 2) in the other per-point vectors. LAZ
+  (a compressed point data format, whatever the extension) is decoded, `options.threads` chunks in
+  parallel, to the records of its uncompressed twin: LASzip's point-wise and layered chunked
+  compressors, fixed and variable chunks; wave packets are refused (manual, "Compressed Lidar").
   A PLY point set with a vertex property `label`, `class` or `classification` whose values are
   integers gets them in `Oriented_point_set::labels`.
   Normals, as `options` says: the file's, or estimated by `estimate_normals()` (PCA by default) on the
@@ -43,12 +45,13 @@ namespace Sigmoid_neighborhoods {
   normals, zero or not, are replaced; with `Normal_source::FROM_FILE` a zero normal is an error.
 
   \param filename the file; its extension (any case) selects the format: `.off`, `.obj`, `.ply`,
-  `.stl`, `.xyz`, `.pwn` or `.las` (`.laz` is refused)
+  `.stl`, `.xyz`, `.pwn`, `.las` or `.laz`
   \param options where the normals come from and how they are estimated and oriented
   \return the points, their normals, how they were obtained, counts of merged and dropped points
 
   \throws Input_error with a one-line message on anything unusable: a missing, unreadable or empty
-  file, an unknown extension, a syntax error, a count beyond the file, LAZ, non-finite coordinates,
+  file, an unknown extension, a syntax error, a count beyond the file, a damaged LAZ file or one with
+  wave packets (the message names the chunk), non-finite coordinates,
   non-finite normals, zero normals with `Normal_source::FROM_FILE` (or with `Normal_source::AUTO` and
   `options.neighbors` 0, unless all are zero), no points, no normals with `Normal_source::FROM_FILE`,
   points on which no normal can be estimated (too few, on a line, coincident).

@@ -72,8 +72,10 @@ std::size_t thread_count(unsigned int requested)
 // result depends on `i` only, so the outcome is the same, bit for bit, for any number of threads.
 // An exception thrown by `body` (or `make_scratch`) stops the loop and is rethrown to the caller:
 // the one of the smallest index among those that threw.
+// `grain` indices are handed to a thread at a time: few costly indices (chunks of a file) take 1.
 template <typename ConcurrencyTag, typename MakeScratch, typename Body>
-void for_each_index(std::size_t n, unsigned int threads, const MakeScratch& make_scratch, const Body& body)
+void for_each_index(std::size_t n, unsigned int threads, const MakeScratch& make_scratch, const Body& body,
+                    std::size_t grain = 16)
 {
   const std::size_t thread_number = thread_count<ConcurrencyTag>(threads);
 #if defined(_OPENMP)
@@ -107,7 +109,7 @@ void for_each_index(std::size_t n, unsigned int threads, const MakeScratch& make
         record(-1);
       }
       // every thread reaches the worksharing loop, even one whose scratch failed
-#pragma omp for schedule(dynamic, 16)
+#pragma omp for schedule(dynamic, static_cast<int>(grain))
       for(std::int64_t i = 0; i < count; ++i)
       {
         if(failed.load(std::memory_order_relaxed))
@@ -133,7 +135,7 @@ void for_each_index(std::size_t n, unsigned int threads, const MakeScratch& make
     // TBB cancels the loop on the first exception and rethrows it to the caller.
     tbb::enumerable_thread_specific<Scratch> scratches(make_scratch);
     auto run = [&] {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 16), [&](const tbb::blocked_range<std::size_t>& r) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain), [&](const tbb::blocked_range<std::size_t>& r) {
         Scratch& scratch = scratches.local();
         for(std::size_t i = r.begin(); i != r.end(); ++i)
           body(i, scratch);
@@ -145,6 +147,7 @@ void for_each_index(std::size_t n, unsigned int threads, const MakeScratch& make
   }
 #endif
   (void)thread_number;
+  (void)grain;
   auto scratch = make_scratch();
   for(std::size_t i = 0; i < n; ++i)
     body(i, scratch);

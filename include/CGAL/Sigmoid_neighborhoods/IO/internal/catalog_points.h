@@ -113,7 +113,7 @@ inline void append_tile_points(const Catalog_tile& tile, const CGAL::Bbox_2* reg
     const std::string extension = lower_case_extension(tile.path);
     if(extension == "las" || extension == "laz")
     {
-      const Input_file file = open_input_file(tile.path, {"las", "laz"}, ".las");
+      const Input_file file = open_input_file(tile.path, {"las", "laz"}, ".las or .laz");
       read_las(file, s, [&](std::size_t point, const double* xyz) { return keep(point, xyz[0], xyz[1]); });
     }
     else

@@ -10,6 +10,8 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/Byte_budget.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/input_file.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/Laz_layout.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/decode_chunks.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 
 #include <algorithm>
@@ -35,7 +37,8 @@ namespace internal {
 //
 // The public header block (offsets in bytes; LAS 1.0 to 1.2 end at 227, 1.3 at 235, 1.4 at 375):
 //     0 "LASF"   24 version major, 25 minor   94 header size (uint16)   96 offset to point data (uint32)
-//   104 point data record format (uint8; LASzip sets bit 7, some writers bit 6)
+//   100 number of variable-length records (uint32)
+//   104 point data record format (uint8; LASzip sets bit 7, some writers bit 6: compressed, LAZ)
 //   105 point data record length (uint16)   107 legacy number of point records (uint32)
 //   131 scale x y z, 155 offset x y z, 179 max x, min x, max y, min y, max z, min z (doubles)
 //   247 number of point records (uint64, LAS 1.4)
@@ -57,12 +60,6 @@ constexpr unsigned int LAS_FIRST_EXTENDED_FORMAT = 6; // formats 6-10: 8-bit cla
 constexpr unsigned int LAS_COMPRESSION_BITS = 0xC0;   // of the format byte: LAZ
 constexpr unsigned int LAS_FORMAT_BITS = 0x3F;
 constexpr std::size_t LAS_CHUNK_BYTES = std::size_t(1) << 22; // records read at a time
-
-inline std::string laz_refusal()
-{
-  return "LAZ (compressed LAS) is not read: decompress it first, e.g. 'laszip -i FILE.laz -o FILE.las' or "
-         "'pdal translate FILE.laz FILE.las'";
-}
 
 inline std::string las_error(const std::string& reason) { return "cannot parse the file as las (" + reason + ")"; }
 
@@ -89,6 +86,8 @@ struct Las_header
   unsigned int version_major = 0, version_minor = 0;
   std::uint16_t header_size = 0;
   std::uint32_t offset_to_point_data = 0;
+  std::uint32_t vlr_count = 0;
+  bool compressed = false;         // LAZ: the points in LASzip's chunks
   unsigned int point_format = 0;   // 0 to 10
   std::uint16_t record_length = 0; // at least LAS_POINT_RECORD_BYTES[point_format]
   std::uint64_t point_count = 0;   // the 64-bit count of LAS 1.4 when not 0, else the legacy one
@@ -130,9 +129,8 @@ inline Las_header read_las_header(std::istream& in, std::uintmax_t file_size)
                                 std::to_string(file_size)));
 
   const unsigned int format_byte = b[104];
-  if((format_byte & LAS_COMPRESSION_BITS) != 0)
-    throw Input_error(laz_refusal() + " (the point data format byte is " + std::to_string(format_byte) +
-                      ": compressed)");
+  h.compressed = (format_byte & LAS_COMPRESSION_BITS) != 0;
+  h.vlr_count = las_number<std::uint32_t>(b + 100);
   h.point_format = format_byte & LAS_FORMAT_BITS;
   if(h.point_format > LAS_LAST_POINT_FORMAT)
     throw Input_error(las_error("point data format " + std::to_string(h.point_format) +
@@ -172,6 +170,8 @@ inline Las_header read_las_header(std::istream& in, std::uintmax_t file_size)
   if(h.offset_to_point_data > file_size)
     throw Input_error(las_error("point data at byte " + std::to_string(h.offset_to_point_data) +
                                 ", beyond the end of a file of " + std::to_string(file_size) + " bytes"));
+  if(h.compressed)
+    return h; // LAZ: the points are checked against the chunk table (read_laz_layout())
   const Byte_budget budget(file_size, file_size - h.offset_to_point_data);
   budget.check(h.point_count, h.record_length, [&](const std::string& excess) {
     return las_error("the header announces " + std::to_string(h.point_count) + " points of " +
@@ -191,12 +191,10 @@ inline std::uintmax_t las_file_size(const std::string& filename)
   return size;
 }
 
-// The header of the LAS file `filename`, checked (a later reader of many tiles indexes them by
-// their bounding boxes); a `.laz` file is refused.
+// The header of the LAS or LAZ file `filename`, checked (a later reader of many tiles indexes them
+// by their bounding boxes).
 inline Las_header read_las_header(const std::string& filename)
 {
-  if(lower_case_extension(filename) == "laz")
-    throw Input_error(laz_refusal());
   std::ifstream in(filename, std::ios::binary);
   if(!in)
     throw Input_error("cannot open the file");
@@ -214,34 +212,32 @@ inline void reserve_las_points(Oriented_point_set& out, std::size_t n, bool gps_
     out.gps_times.reserve(out.gps_times.size() + n);
 }
 
-// Every record of a LAS file.
-struct Keep_every_las_point
+// Where the LASzip chunks of a compressed file lie, checked against the file.
+inline laz::Layout read_laz_layout(std::istream& in, const Las_header& h)
 {
-  bool operator()(std::size_t, const double*) const { return true; }
-};
+  laz::Layout layout =
+    laz::read_laszip_record(in, h.header_size, h.vlr_count, h.offset_to_point_data, h.record_length);
+  if((layout.compressor == laz::LAYERED_CHUNKED) != h.has_extended_format())
+    throw Input_error(laz::laz_error("compressor " + std::to_string(layout.compressor) + " for point data format " +
+                                     std::to_string(h.point_format) + ": LASzip compresses formats 0 to 5 point "
+                                     "by point (2) and formats 6 to 10 in layers (3)"));
+  laz::read_chunk_table(in, h.file_size, h.offset_to_point_data, h.point_count, h.record_length, layout);
+  return layout;
+}
 
-// The points of a LAS file with their classification (`labels`), intensity, return number, number of
-// returns and, in the formats that have it, GPS time, appended to `out`; the file's records in its
-// order, read a chunk at a time, those for which `keep(record, xyz)` is true (a tile's halo reads a
-// neighbor tile without holding it whole). A `.laz` file, or a compressed one, is refused with how
-// to decompress it.
-template <typename Keep = Keep_every_las_point>
-void read_las(const Input_file& file, Oriented_point_set& out, Keep keep = Keep())
+// Calls `sink(first, records, count)` on the file's point records in order, `count` at a time, as
+// an uncompressed file stores them: read from an uncompressed file a few megabytes at a time, or
+// decoded from a LAZ file chunk by chunk, `threads` chunks in parallel.
+template <typename Sink>
+void for_each_las_record_block(std::istream& in, const Las_header& h, unsigned int threads, const Sink& sink)
 {
-  if(file.extension == "laz")
-    throw Input_error(laz_refusal());
-  std::ifstream in(file.name, std::ios::binary);
-  if(!in)
-    throw Input_error("cannot open the file");
-  const Las_header h =
-    read_las_header(in, file.size == Byte_budget::UNKNOWN_SIZE ? las_file_size(file.name) : file.size);
-
-  // At most one point per record of the file (read_las_header() checked it): sized to the file,
-  // unless a filter keeps a part of it.
   const std::size_t n = std::size_t(h.point_count);
-  if(std::is_same<Keep, Keep_every_las_point>::value)
-    reserve_las_points(out, n, h.has_gps_time());
-
+  if(h.compressed)
+  {
+    const laz::Layout layout = read_laz_layout(in, h);
+    laz::for_each_decoded_chunk(in, layout, h.record_length, threads, sink);
+    return;
+  }
   in.seekg(std::streamoff(h.offset_to_point_data));
   const std::size_t chunk_points = (std::max)(std::size_t(1), LAS_CHUNK_BYTES / h.record_length);
   std::vector<unsigned char> chunk;
@@ -252,9 +248,41 @@ void read_las(const Input_file& file, Oriented_point_set& out, Keep keep = Keep(
     if(!in.read(reinterpret_cast<char*>(chunk.data()), std::streamsize(chunk.size())))
       throw Input_error(las_error("the file ends in point " + std::to_string(first + std::size_t(in.gcount()) /
                                                                                      h.record_length)));
+    sink(first, chunk.data(), count);
+    first += count;
+  }
+}
+
+// Every record of a LAS file.
+struct Keep_every_las_point
+{
+  bool operator()(std::size_t, const double*) const { return true; }
+};
+
+// The points of a LAS or LAZ file with their classification (`labels`), intensity, return number,
+// number of returns and, in the formats that have it, GPS time, appended to `out`; the file's records
+// in its order, read (or decoded, on `threads` threads) a chunk at a time, those for which
+// `keep(record, xyz)` is true (a tile's halo reads a neighbor tile without holding it whole). Whether
+// the points are compressed is the header's to say, whatever the extension.
+template <typename Keep = Keep_every_las_point>
+void read_las(const Input_file& file, Oriented_point_set& out, Keep keep = Keep(), unsigned int threads = 0)
+{
+  std::ifstream in(file.name, std::ios::binary);
+  if(!in)
+    throw Input_error("cannot open the file");
+  const Las_header h =
+    read_las_header(in, file.size == Byte_budget::UNKNOWN_SIZE ? las_file_size(file.name) : file.size);
+
+  // At most one point per record of the file (read_las_header() checked it): sized to the file,
+  // unless a filter keeps a part of it. A LAZ file's count is checked against its chunk table, not
+  // bounded by its size: its vectors grow as its chunks are decoded.
+  if(std::is_same<Keep, Keep_every_las_point>::value && !h.compressed)
+    reserve_las_points(out, std::size_t(h.point_count), h.has_gps_time());
+
+  for_each_las_record_block(in, h, threads, [&](std::size_t first, const unsigned char* records, std::size_t count) {
     for(std::size_t i = 0; i < count; ++i)
     {
-      const unsigned char* r = chunk.data() + i * h.record_length;
+      const unsigned char* r = records + i * h.record_length;
       double xyz[3];
       for(int c = 0; c < 3; ++c)
       {
@@ -283,8 +311,7 @@ void read_las(const Input_file& file, Oriented_point_set& out, Keep keep = Keep(
       if(h.has_gps_time())
         out.gps_times.push_back(las_number<double>(r + h.gps_time_offset()));
     }
-    first += count;
-  }
+  });
 }
 
 } // namespace internal

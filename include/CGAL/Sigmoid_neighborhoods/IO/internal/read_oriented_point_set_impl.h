@@ -43,7 +43,7 @@ read_oriented_point_set(const std::string& filename, const Normal_options& optio
                                 ", got " + std::to_string(options.neighbors));
   const bool estimate_anyway = options.source == Normal_source::PCA || options.source == Normal_source::JET;
   const internal::Input_file file = internal::open_input_file(
-    filename, {"off", "obj", "ply", "stl", "xyz", "pwn", "las", "laz"}, ".off, .obj, .ply, .stl, .xyz, .pwn or .las");
+    filename, {"off", "obj", "ply", "stl", "xyz", "pwn", "las", "laz"}, ".off, .obj, .ply, .stl, .xyz, .pwn, .las or .laz");
 
   // Each format to points, and normals when the file has them; a mesh is done there.
   Oriented_point_set out;
@@ -51,7 +51,7 @@ read_oriented_point_set(const std::string& filename, const Normal_options& optio
   if(file.extension == "xyz" || file.extension == "pwn")
     internal::read_xyz(file.name, out.points, out.normals, has_normals);
   else if(file.extension == "las" || file.extension == "laz")
-    internal::read_las(file, out); // no normals in LAS; LAZ refused
+    internal::read_las(file, out, internal::Keep_every_las_point(), options.threads); // no normals in LAS
   else
   {
     internal::Polygon_soup soup;

@@ -1,0 +1,116 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// LAZ decoding speed: for each file given, the point records decoded (or, for a LAS file, read) on
+// each thread count given, the median wall time of a few runs after a warm-up run (the page cache
+// warm), in points per second; then the whole read through read_oriented_point_set() (records to
+// points and fields, duplicates merged, no normals), which is what a command pays.
+// usage: laz_decode_benchmark [--threads 1,2] [--runs 5 (0: one run, no warm-up)] FILE...
+
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_las.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace SN = CGAL::Sigmoid_neighborhoods;
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <typename Run>
+double median_seconds(unsigned int runs, const Run& run)
+{
+  if(runs == 0) // one cold run (peak memory)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    run();
+    return seconds_since(start);
+  }
+  run(); // warm-up: the file in the page cache
+  std::vector<double> times;
+  for(unsigned int r = 0; r < runs; ++r)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    run();
+    times.push_back(seconds_since(start));
+  }
+  std::sort(times.begin(), times.end());
+  return times[times.size() / 2];
+}
+
+std::size_t decode_records(const std::string& path, unsigned int threads)
+{
+  std::ifstream in(path, std::ios::binary);
+  const SN::internal::Las_header h = SN::internal::read_las_header(in, std::filesystem::file_size(path));
+  std::size_t checksum = 0;
+  SN::internal::for_each_las_record_block(in, h, threads, [&](std::size_t, const unsigned char* r, std::size_t count) {
+    checksum += count + r[0]; // keeps the records alive for the optimizer
+  });
+  return checksum;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  std::vector<unsigned int> thread_counts = {1, 2};
+  unsigned int runs = 5;
+  std::vector<std::string> files;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string a = argv[i];
+    if(a == "--threads" && i + 1 < argc)
+    {
+      thread_counts.clear();
+      std::stringstream list(argv[++i]);
+      for(std::string t; std::getline(list, t, ',');)
+        thread_counts.push_back(unsigned(std::stoul(t)));
+    }
+    else if(a == "--runs" && i + 1 < argc)
+      runs = unsigned(std::stoul(argv[++i]));
+    else
+      files.push_back(a);
+  }
+  if(files.empty())
+  {
+    std::cerr << "usage: laz_decode_benchmark [--threads 1,2] [--runs 5] FILE...\n";
+    return 2;
+  }
+  std::printf("%-52s %9s %7s %12s %12s %14s\n", "file", "points", "threads", "decode_s", "Mpoints/s", "read_points_s");
+  for(const std::string& path : files)
+  {
+    try
+    {
+      const SN::internal::Las_header h = SN::internal::read_las_header(path);
+      for(unsigned int t : thread_counts)
+      {
+        const double decode = median_seconds(runs, [&] { decode_records(path, t); });
+        SN::Normal_options options;
+        options.neighbors = 0;
+        options.threads = t;
+        const double read = median_seconds(runs, [&] { SN::read_oriented_point_set(path, options); });
+        std::printf("%-52s %9llu %7u %12.4f %12.2f %14.4f\n", std::filesystem::path(path).filename().c_str(),
+                    static_cast<unsigned long long>(h.point_count), t, decode, double(h.point_count) / decode / 1e6,
+                    read);
+      }
+    }
+    catch(const std::exception& e)
+    {
+      std::cerr << path << ": " << e.what() << '\n';
+    }
+  }
+  return 0;
+}

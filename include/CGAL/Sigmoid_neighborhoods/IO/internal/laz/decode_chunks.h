@@ -1,0 +1,117 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_DECODE_CHUNKS_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_DECODE_CHUNKS_H
+
+#include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/Laz_layout.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/Layered_chunk_decoder.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/Pointwise_chunk_decoder.h>
+#include <CGAL/Sigmoid_neighborhoods/concurrency.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <istream>
+#include <optional>
+#include <string>
+#include <vector>
+
+/// \cond SKIP_IN_MANUAL
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+namespace internal {
+namespace laz {
+
+// The decoder of a file's compressor; one per thread, reused chunk after chunk.
+class Chunk_decoder
+{
+public:
+  // Decode_error for items the compressor does not read (wave packets, unknown versions).
+  explicit Chunk_decoder(const Layout& layout)
+  {
+    if(layout.compressor == POINTWISE_CHUNKED)
+      m_pointwise.emplace(layout.items);
+    else
+      m_layered.emplace(layout.items);
+  }
+
+  void decode(const unsigned char* begin, const unsigned char* end, std::size_t count, unsigned char* out)
+  {
+    if(m_pointwise)
+      m_pointwise->decode(begin, end, count, out);
+    else
+      m_layered->decode(begin, end, count, out);
+  }
+
+private:
+  std::optional<Pointwise_chunk_decoder> m_pointwise;
+  std::optional<Layered_chunk_decoder> m_layered;
+};
+
+// Calls `sink(first_point, records, count)` for every chunk of `layout`, in the file's order, with its
+// `count` records as an uncompressed LAS file stores them. The chunks are decoded `threads` at a time
+// (0: the OpenMP or TBB default) in parallel, each on its own bytes, so memory holds one chunk per
+// thread beyond what `sink` keeps, and the records are the same for any thread count. A chunk that
+// does not decode is an Input_error naming it.
+template <typename ConcurrencyTag = Parallel_if_available_tag, typename Sink>
+void for_each_decoded_chunk(std::istream& in, const Layout& layout, std::size_t record_length, unsigned int threads,
+                            const Sink& sink)
+{
+  try
+  {
+    Chunk_decoder check(layout); // refuses unread items here, once, before any chunk
+  }
+  catch(const Decode_error& e)
+  {
+    throw Input_error(laz_error(e.what()));
+  }
+  const std::size_t chunks = layout.chunk_count();
+  const std::size_t batch = thread_count<ConcurrencyTag>(threads);
+  std::vector<unsigned char> coded;
+  std::vector<std::vector<unsigned char>> records(batch);
+  std::optional<Chunk_decoder> single;
+  for(std::size_t first = 0; first < chunks; first += batch)
+  {
+    const std::size_t n = (std::min)(batch, chunks - first);
+    const std::uint64_t from = layout.chunk_starts[first], to = layout.chunk_starts[first + n];
+    coded.resize(std::size_t(to - from));
+    read_exactly(in, from, coded.data(), coded.size(), "a chunk");
+    for(std::size_t i = 0; i < n; ++i)
+      records[i].resize(std::size_t(layout.chunk_firsts[first + i + 1] - layout.chunk_firsts[first + i]) *
+                        record_length);
+    const auto decode = [&](std::size_t i, Chunk_decoder& decoder) {
+      const std::size_t c = first + i;
+      const std::uint64_t begin = layout.chunk_starts[c], end = layout.chunk_starts[c + 1];
+      try
+      {
+        decoder.decode(coded.data() + (begin - from), coded.data() + (end - from),
+                       std::size_t(layout.chunk_firsts[c + 1] - layout.chunk_firsts[c]), records[i].data());
+      }
+      catch(const Decode_error& e)
+      {
+        throw Input_error(laz_error("chunk " + std::to_string(c) + " of " + std::to_string(chunks) + ", bytes " +
+                                    std::to_string(begin) + " to " + std::to_string(end) + ": " + e.what()));
+      }
+    };
+    if(n == 1) // the last chunk, or a file of one: no threads to wake
+      decode(0, single ? *single : single.emplace(layout));
+    else
+      for_each_index<ConcurrencyTag>(n, threads, [&] { return Chunk_decoder(layout); }, decode, 1);
+    for(std::size_t i = 0; i < n; ++i)
+      sink(std::size_t(layout.chunk_firsts[first + i]), records[i].data(),
+           std::size_t(layout.chunk_firsts[first + i + 1] - layout.chunk_firsts[first + i]));
+  }
+}
+
+} // namespace laz
+} // namespace internal
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+/// \endcond
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_DECODE_CHUNKS_H

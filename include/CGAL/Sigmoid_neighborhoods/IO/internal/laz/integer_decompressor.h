@@ -1,0 +1,135 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_INTEGER_DECOMPRESSOR_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_INTEGER_DECOMPRESSOR_H
+
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_decoder.h>
+
+#include <CGAL/assertions.h>
+
+#include <cstdint>
+#include <vector>
+
+/// \cond SKIP_IN_MANUAL
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+namespace internal {
+namespace laz {
+
+// LASzip's integer coding: a number is coded as its difference (the corrector) from a prediction.
+// The corrector's magnitude class k (it lies in [-(2^k - 1), 2^k], k = 0 meaning 0 or 1) is a symbol
+// of a per-context model; its position within the class is a symbol of a per-k model, or for
+// k > bits_high the top bits_high bits a symbol and the rest raw bits. Numbers wrap modulo the
+// range (2^bits, or `range` when given), as the encoder folded them.
+class Integer_decompressor
+{
+public:
+  explicit Integer_decompressor(Arithmetic_decoder& decoder, std::uint32_t bits = 16, std::uint32_t contexts = 1,
+                                std::uint32_t bits_high = 8, std::uint32_t range = 0)
+    : m_decoder(&decoder), m_bits_high(bits_high)
+  {
+    CGAL_precondition(contexts >= 1 && bits_high >= 1 && bits_high <= 11);
+    if(range != 0)
+    {
+      // As many bits as the range needs (one less when it is a power of two).
+      m_corrector_bits = 0;
+      for(std::uint32_t r = range; r != 0; r >>= 1)
+        ++m_corrector_bits;
+      if(range == (1u << (m_corrector_bits - 1)))
+        --m_corrector_bits;
+      m_range = range;
+      m_min_corrector = -std::int32_t(range / 2);
+    }
+    else if(bits != 0 && bits < 32)
+    {
+      m_corrector_bits = bits;
+      m_range = 1u << bits;
+      m_min_corrector = -std::int32_t(m_range / 2);
+    }
+    else
+    {
+      m_corrector_bits = 32;
+      m_range = 0; // the whole 32-bit circle: wrapping does it
+      m_min_corrector = std::int32_t(-2147483647 - 1);
+    }
+    m_k_models.assign(contexts, Arithmetic_model(m_corrector_bits + 1));
+    // Classes k = 1 .. min(corrector bits, 31); k = 32 codes nothing more (the corrector is then the
+    // range's minimum), so it has no model.
+    const std::uint32_t modeled = m_corrector_bits < 32 ? m_corrector_bits : 31;
+    m_position_models.reserve(modeled);
+    for(std::uint32_t k = 1; k <= modeled; ++k)
+      m_position_models.emplace_back(1u << (k <= bits_high ? k : bits_high));
+  }
+
+  // Fresh models, as at the start of every chunk.
+  void init()
+  {
+    for(Arithmetic_model& m : m_k_models)
+      m.init();
+    m_low_bit.init();
+    for(Arithmetic_model& m : m_position_models)
+      m.init();
+  }
+
+  // The number coded against `prediction`. With 2^bits (bits < 32) as the range and a prediction in
+  // [0, 2^bits), it lies in [0, 2^bits) whatever the bytes; with a `range` given, only valid bytes
+  // keep it in [0, range) (LASzip folds once).
+  std::int32_t decompress(std::int32_t prediction, std::uint32_t context = 0)
+  {
+    CGAL_precondition(context < m_k_models.size());
+    std::uint32_t real = std::uint32_t(prediction) + std::uint32_t(read_corrector(m_k_models[context]));
+    // Back into [0, range): the encoder folded the corrector so that this wraps at most once.
+    if(std::int32_t(real) < 0)
+      real += m_range;
+    else if(real >= m_range)
+      real -= m_range;
+    return std::int32_t(real);
+  }
+
+  // The magnitude class of the last corrector: later predictions use it as a context.
+  std::uint32_t k() const { return m_k; }
+
+private:
+  std::int32_t read_corrector(Arithmetic_model& k_model)
+  {
+    const std::uint32_t k = m_k = m_decoder->decode_symbol(k_model); // <= corrector bits
+    if(k == 0)
+      return std::int32_t(m_decoder->decode_bit(m_low_bit));
+    if(k >= 32)
+      return m_min_corrector;
+    Arithmetic_model& position = m_position_models[k - 1];
+    std::uint32_t c;
+    if(k <= m_bits_high)
+      c = m_decoder->decode_symbol(position);
+    else
+    {
+      const std::uint32_t raw = k - m_bits_high;
+      c = m_decoder->decode_symbol(position) << raw;
+      c |= m_decoder->read_bits(raw);
+    }
+    // c in [0, 2^k): the upper half stands for [2^(k-1) + 1, 2^k], the lower for [-(2^k - 1), -2^(k-1)].
+    if(c >= (1u << (k - 1)))
+      return std::int32_t(c + 1);
+    return std::int32_t(c - ((1u << k) - 1));
+  }
+
+  Arithmetic_decoder* m_decoder;
+  std::uint32_t m_bits_high;
+  std::uint32_t m_corrector_bits = 0, m_range = 0;
+  std::int32_t m_min_corrector = 0;
+  std::uint32_t m_k = 0;
+  std::vector<Arithmetic_model> m_k_models;       // per context: the corrector's class k
+  Arithmetic_bit_model m_low_bit;                  // k = 0: the corrector is 0 or 1
+  std::vector<Arithmetic_model> m_position_models; // k = 1, 2, ...: the corrector within its class
+};
+
+} // namespace laz
+} // namespace internal
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+/// \endcond
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_INTEGER_DECOMPRESSOR_H

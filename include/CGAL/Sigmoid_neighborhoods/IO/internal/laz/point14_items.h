@@ -1,0 +1,595 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_POINT14_ITEMS_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_POINT14_ITEMS_H
+
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_decoder.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/integer_decompressor.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/laz_items.h>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+/// \cond SKIP_IN_MANUAL
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+namespace internal {
+namespace laz {
+
+// The POINT14 item of LASzip's layered compression (LAZ 1.4, point formats 6 to 10; item versions 3
+// and 4) and what the other layered items share (RGB14, RGBNIR14 and BYTE14 are in
+// Layered_chunk_decoder.h). Every field of a chunk is coded in its own layer, each layer by its own
+// arithmetic coder, and all models are kept once per scanner channel (4): a point is predicted from
+// the last point of its own channel. POINT14 decodes first and tells the other items the channel.
+
+// One layer's bytes within a chunk; empty when the field never changes in the chunk.
+struct Layer_bytes
+{
+  const unsigned char* begin = nullptr;
+  const unsigned char* end = nullptr;
+  bool empty() const { return begin == end; }
+};
+
+inline std::uint16_t load_le16(const unsigned char* b) { return std::uint16_t(b[0] | (b[1] << 8)); }
+inline std::uint32_t load_le32(const unsigned char* b)
+{
+  return std::uint32_t(b[0]) | (std::uint32_t(b[1]) << 8) | (std::uint32_t(b[2]) << 16) | (std::uint32_t(b[3]) << 24);
+}
+inline std::uint64_t load_le64(const unsigned char* b) { return load_le32(b) | (std::uint64_t(load_le32(b + 4)) << 32); }
+inline void store_le16(unsigned char* b, std::uint16_t v)
+{
+  b[0] = static_cast<unsigned char>(v);
+  b[1] = static_cast<unsigned char>(v >> 8);
+}
+inline void store_le32(unsigned char* b, std::uint32_t v)
+{
+  for(int i = 0; i < 4; ++i)
+    b[i] = static_cast<unsigned char>(v >> (8 * i));
+}
+inline void store_le64(unsigned char* b, std::uint64_t v)
+{
+  store_le32(b, std::uint32_t(v));
+  store_le32(b + 4, std::uint32_t(v >> 32));
+}
+
+// N symbol models of `Symbols` symbols that a chunk's channel starts fresh. LASzip creates some of
+// them only when a context first occurs; a model is therefore (re)initialised on its first use after
+// reset(), which gives the same state as initialising all of them at the start and costs nothing for
+// the contexts a chunk never meets. Allocated once, kept across chunks.
+template <std::size_t N, std::uint32_t Symbols>
+class Lazy_models
+{
+  static_assert(N <= 64, "the fresh mask has 64 bits");
+
+public:
+  void reset() { m_fresh = 0; }
+
+  Arithmetic_model& operator[](std::size_t i)
+  {
+    if(!((m_fresh >> i) & 1u))
+    {
+      if(!m_models[i])
+        m_models[i].emplace(Symbols);
+      m_models[i]->init();
+      m_fresh |= std::uint64_t(1) << i;
+    }
+    return *m_models[i];
+  }
+
+private:
+  std::array<std::optional<Arithmetic_model>, N> m_models;
+  std::uint64_t m_fresh = 0;
+};
+
+// LASzip's running estimate of the middle of the last few coordinate differences (its
+// "StreamingMedian5"): five sorted values, each new one displacing from the high or the low end in
+// turn. Not an exact median; what matters is that it predicts exactly as the encoder did.
+class Streaming_median5
+{
+public:
+  void reset()
+  {
+    m_v = {0, 0, 0, 0, 0};
+    m_high = true;
+  }
+  std::int32_t get() const { return m_v[2]; }
+  void add(std::int32_t x)
+  {
+    if(m_high)
+    {
+      if(x < m_v[2])
+      {
+        m_v[4] = m_v[3];
+        m_v[3] = m_v[2];
+        if(x < m_v[0])
+        {
+          m_v[2] = m_v[1];
+          m_v[1] = m_v[0];
+          m_v[0] = x;
+        }
+        else if(x < m_v[1])
+        {
+          m_v[2] = m_v[1];
+          m_v[1] = x;
+        }
+        else
+          m_v[2] = x;
+      }
+      else
+      {
+        if(x < m_v[3])
+        {
+          m_v[4] = m_v[3];
+          m_v[3] = x;
+        }
+        else
+          m_v[4] = x;
+        m_high = false;
+      }
+    }
+    else
+    {
+      if(m_v[2] < x)
+      {
+        m_v[0] = m_v[1];
+        m_v[1] = m_v[2];
+        if(m_v[4] < x)
+        {
+          m_v[2] = m_v[3];
+          m_v[3] = m_v[4];
+          m_v[4] = x;
+        }
+        else if(m_v[3] < x)
+        {
+          m_v[2] = m_v[3];
+          m_v[3] = x;
+        }
+        else
+          m_v[2] = x;
+      }
+      else
+      {
+        if(m_v[1] < x)
+        {
+          m_v[0] = m_v[1];
+          m_v[1] = x;
+        }
+        else
+          m_v[0] = x;
+        m_high = true;
+      }
+    }
+  }
+
+private:
+  std::array<std::int32_t, 5> m_v{{0, 0, 0, 0, 0}};
+  bool m_high = true;
+};
+
+// The 30 bytes of a LAS 1.4 point (formats 6 to 10), kept as the record stores them.
+struct Point14_record
+{
+  std::uint32_t x = 0, y = 0, z = 0; // unsigned: coordinates change by wrapping 32-bit additions
+  std::uint16_t intensity = 0;
+  std::uint8_t returns = 0; // return number in bits 0-3, number of returns in bits 4-7
+  std::uint8_t flags = 0;   // classification flags 0-3, scanner channel 4-5, scan direction 6, edge of flight line 7
+  std::uint8_t classification = 0, user_data = 0;
+  std::uint16_t scan_angle = 0, point_source = 0;
+  std::uint64_t gps_time = 0; // the double's bits: LASzip codes GPS times as 64-bit integers
+  bool gps_time_changed = false; // not in the record: the next point's context
+
+  static constexpr std::size_t size = 30;
+
+  void read(const unsigned char* b)
+  {
+    x = load_le32(b);
+    y = load_le32(b + 4);
+    z = load_le32(b + 8);
+    intensity = load_le16(b + 12);
+    returns = b[14];
+    flags = b[15];
+    classification = b[16];
+    user_data = b[17];
+    scan_angle = load_le16(b + 18);
+    point_source = load_le16(b + 20);
+    gps_time = load_le64(b + 22);
+    gps_time_changed = false;
+  }
+
+  void write(unsigned char* b) const
+  {
+    store_le32(b, x);
+    store_le32(b + 4, y);
+    store_le32(b + 8, z);
+    store_le16(b + 12, intensity);
+    b[14] = returns;
+    b[15] = flags;
+    b[16] = classification;
+    b[17] = user_data;
+    store_le16(b + 18, scan_angle);
+    store_le16(b + 20, point_source);
+    store_le64(b + 22, gps_time);
+  }
+
+  unsigned return_number() const { return returns & 15u; }
+  unsigned number_of_returns() const { return unsigned(returns) >> 4; }
+  unsigned scanner_channel() const { return (flags >> 4) & 3u; }
+};
+
+// LASzip's 6 classes of (number of returns n, return number r), rows n, columns r: single, first of
+// two, last of two, first of more, intermediate, last of more; the pairs that cannot be are spread
+// over the same classes. A property of the format: the encoder's table, as it uses it.
+inline const std::uint8_t (&return_map_6ctx())[16][16]
+{
+  static const std::uint8_t map[16][16] = {
+    {0, 1, 2, 3, 4, 5, 3, 4, 4, 5, 5, 5, 5, 5, 5, 5}, {1, 0, 1, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3, 3},
+    {2, 1, 2, 4, 4, 4, 4, 4, 4, 4, 4, 3, 3, 3, 3, 3}, {3, 3, 4, 5, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4},
+    {4, 3, 4, 4, 5, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4}, {5, 3, 4, 4, 4, 5, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4},
+    {3, 3, 4, 4, 4, 4, 5, 4, 4, 4, 4, 4, 4, 4, 4, 4}, {4, 3, 4, 4, 4, 4, 4, 5, 4, 4, 4, 4, 4, 4, 4, 4},
+    {4, 3, 4, 4, 4, 4, 4, 4, 5, 4, 4, 4, 4, 4, 4, 4}, {5, 3, 4, 4, 4, 4, 4, 4, 4, 5, 4, 4, 4, 4, 4, 4},
+    {5, 3, 4, 4, 4, 4, 4, 4, 4, 4, 5, 4, 4, 4, 4, 4}, {5, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4, 5, 5, 4, 4, 4},
+    {5, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4, 5, 5, 5, 4, 4}, {5, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4, 4, 5, 5, 5, 4},
+    {5, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 5, 5, 5}, {5, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 4, 5, 5}};
+  return map;
+}
+
+// How deep a return lies in its pulse, |n - r| capped at 7: LASzip's 8 contexts of the Z prediction.
+inline unsigned return_level_8ctx(unsigned n, unsigned r)
+{
+  const unsigned d = n > r ? n - r : r - n;
+  return d < 7 ? d : 7;
+}
+
+// The POINT14 item (v3; v4 codes the same bits): nine layers.
+class Point14_decoder
+{
+public:
+  enum Layer_index
+  {
+    XY_LAYER, // changed-values bits, scanner channel, returns, X and Y
+    Z_LAYER,
+    CLASSIFICATION_LAYER,
+    FLAGS_LAYER,
+    INTENSITY_LAYER,
+    SCAN_ANGLE_LAYER,
+    USER_DATA_LAYER,
+    POINT_SOURCE_LAYER,
+    GPS_TIME_LAYER,
+    LAYER_COUNT
+  };
+
+  static const char* layer_name(std::size_t i)
+  {
+    static const char* const names[LAYER_COUNT] = {"channel, returns and X/Y", "Z",         "classification",
+                                                   "flags",                    "intensity", "scan angle",
+                                                   "user data",                "point source ID", "GPS time"};
+    return names[i];
+  }
+
+  Point14_decoder() = default;
+  Point14_decoder(const Point14_decoder&) = delete; // the channels' decompressors refer to m_decoders
+  Point14_decoder& operator=(const Point14_decoder&) = delete;
+
+  // Starts a chunk from its first point (raw) and its nine layers; returns the first point's channel.
+  unsigned start(const unsigned char* first, const Layer_bytes* layers)
+  {
+    if(layers[XY_LAYER].empty())
+      throw Decode_error("the POINT14 " + std::string(layer_name(XY_LAYER)) + " layer of a chunk of several points is empty");
+    for(std::size_t i = 0; i < LAYER_COUNT; ++i)
+    {
+      m_has[i] = !layers[i].empty();
+      if(m_has[i])
+        m_decoders[i].init(layers[i].begin, layers[i].end);
+    }
+    m_active = {false, false, false, false};
+    Point14_record record;
+    record.read(first);
+    m_current = record.scanner_channel();
+    activate(m_current, record);
+    return m_current;
+  }
+
+  // Decodes the next point into out[0, 30); returns its scanner channel.
+  unsigned decode(unsigned char* out)
+  {
+    Channel* ch = &*m_channels[m_current];
+    Point14_record* last = &ch->last;
+    Arithmetic_decoder& xy = m_decoders[XY_LAYER];
+
+    // What changed is coded in the context of how the channel's last point returned.
+    const unsigned lpr = (last->return_number() == 1 ? 1u : 0u) |
+                         (last->return_number() >= last->number_of_returns() ? 2u : 0u) |
+                         (last->gps_time_changed ? 4u : 0u);
+    const unsigned changed = xy.decode_symbol(ch->changed_values[lpr]);
+
+    if(changed & (1u << 6)) // another scanner channel: continue from that channel's last point
+    {
+      const unsigned step = xy.decode_symbol(ch->scanner_channel[0]); // 0..2: the channel moves by 1 to 3
+      const unsigned next = (m_current + step + 1) & 3u;
+      if(!m_active[next])
+        activate(next, *last);
+      m_current = next;
+      ch = &*m_channels[next];
+      last = &ch->last;
+      last->flags = std::uint8_t((last->flags & ~0x30u) | (next << 4));
+    }
+    const bool point_source_changed = (changed & (1u << 5)) != 0;
+    const bool gps_changed = (changed & (1u << 4)) != 0;
+    const bool scan_angle_changed = (changed & (1u << 3)) != 0;
+
+    const unsigned last_n = last->number_of_returns(), last_r = last->return_number();
+    unsigned n = last_n;
+    if(changed & (1u << 2))
+      n = xy.decode_symbol(ch->number_of_returns[last_n]); // 16 symbols
+    unsigned r = last_r;
+    switch(changed & 3u)
+    {
+    case 0: break;
+    case 1: r = (last_r + 1) & 15u; break;
+    case 2: r = (last_r + 15) & 15u; break;
+    default:
+      if(gps_changed)
+        r = xy.decode_symbol(ch->return_number[last_r]); // 16 symbols
+      else
+        r = (last_r + xy.decode_symbol(ch->return_number_gps_same[0]) + 2) & 15u;
+    }
+    last->returns = std::uint8_t(r | (n << 4));
+
+    const unsigned m = return_map_6ctx()[n][r];
+    const unsigned level = return_level_8ctx(n, r);
+    const unsigned cpr = (r == 1 ? 1u : 0u) | (r >= n ? 2u : 0u); // first, last, single or in between
+    const unsigned single = n == 1 ? 1u : 0u;
+
+    const unsigned xy_slot = (m << 1) | (gps_changed ? 1u : 0u);
+    std::int32_t diff = ch->dx.decompress(ch->x_median[xy_slot].get(), single);
+    last->x += std::uint32_t(diff);
+    ch->x_median[xy_slot].add(diff);
+    unsigned k = ch->dx.k();
+    diff = ch->dy.decompress(ch->y_median[xy_slot].get(), single + (k < 20 ? (k & ~1u) : 20u));
+    last->y += std::uint32_t(diff);
+    ch->y_median[xy_slot].add(diff);
+
+    if(m_has[Z_LAYER])
+    {
+      k = (ch->dx.k() + ch->dy.k()) / 2;
+      const std::int32_t z = ch->z.decompress(ch->last_z[level], single + (k < 18 ? (k & ~1u) : 18u));
+      last->z = std::uint32_t(z);
+      ch->last_z[level] = z;
+    }
+    if(m_has[CLASSIFICATION_LAYER])
+    {
+      const unsigned context = ((last->classification & 0x1Fu) << 1) | (cpr == 3 ? 1u : 0u);
+      last->classification =
+        std::uint8_t(m_decoders[CLASSIFICATION_LAYER].decode_symbol(ch->classification[context]));
+    }
+    if(m_has[FLAGS_LAYER])
+    {
+      // The coded 6 bits: edge of flight line, scan direction, then the 4 classification flags.
+      const unsigned context = ((last->flags >> 2) & 0x30u) | (last->flags & 0x0Fu);
+      const unsigned f = m_decoders[FLAGS_LAYER].decode_symbol(ch->flags[context]);
+      last->flags = std::uint8_t(((f & 0x30u) << 2) | (last->flags & 0x30u) | (f & 0x0Fu));
+    }
+    if(m_has[INTENSITY_LAYER])
+    {
+      const unsigned slot = (cpr << 1) | (gps_changed ? 1u : 0u);
+      const std::uint16_t v = std::uint16_t(ch->intensity.decompress(ch->last_intensity[slot], cpr));
+      ch->last_intensity[slot] = v;
+      last->intensity = v;
+    }
+    if(m_has[SCAN_ANGLE_LAYER] && scan_angle_changed)
+      last->scan_angle = std::uint16_t(
+        ch->scan_angle.decompress(std::int16_t(last->scan_angle), gps_changed ? 1u : 0u)); // signed, as coded
+    if(m_has[USER_DATA_LAYER])
+      last->user_data = std::uint8_t(m_decoders[USER_DATA_LAYER].decode_symbol(ch->user_data[last->user_data >> 2]));
+    if(m_has[POINT_SOURCE_LAYER] && point_source_changed)
+      last->point_source = std::uint16_t(ch->point_source.decompress(last->point_source));
+    if(m_has[GPS_TIME_LAYER] && gps_changed)
+    {
+      decode_gps_time(*ch);
+      last->gps_time = ch->gps_last[ch->gps_current];
+    }
+    last->write(out);
+    last->gps_time_changed = gps_changed;
+    return m_current;
+  }
+
+private:
+  // The GPS time coder: a change is coded as a multiple of the last difference, as a new
+  // difference, as a jump to one of four remembered time sequences, or in full.
+  static constexpr int GPS_MULTI = 500;         // codes 2 .. 499: that many times the last difference
+  static constexpr int GPS_MULTI_MINUS = -10;   // codes 501 .. 510: -1 .. -10 times it
+  static constexpr unsigned GPS_FULL = unsigned(GPS_MULTI - GPS_MULTI_MINUS + 1);    // 511: the time in full
+  static constexpr unsigned GPS_SYMBOLS = unsigned(GPS_MULTI - GPS_MULTI_MINUS + 5); // 515: then 3 jumps
+
+  struct Channel
+  {
+    explicit Channel(Arithmetic_decoder* d)
+      : dx(d[XY_LAYER], 32, 2), dy(d[XY_LAYER], 32, 22), z(d[Z_LAYER], 32, 20), intensity(d[INTENSITY_LAYER], 16, 4),
+        scan_angle(d[SCAN_ANGLE_LAYER], 16, 2), point_source(d[POINT_SOURCE_LAYER], 16),
+        gps(d[GPS_TIME_LAYER], 32, 9)
+    {}
+
+    Point14_record last;
+    std::array<std::uint16_t, 8> last_intensity{};
+    std::array<std::int32_t, 8> last_z{};
+    std::array<Streaming_median5, 12> x_median, y_median;
+
+    std::array<std::uint64_t, 4> gps_last{};
+    std::array<std::int32_t, 4> gps_diff{};
+    std::array<std::int32_t, 4> gps_extremes{}; // how often in a row the difference was far from the last one
+    unsigned gps_current = 0, gps_next = 0;
+
+    Lazy_models<8, 128> changed_values;
+    Lazy_models<1, 3> scanner_channel;
+    Lazy_models<16, 16> number_of_returns;
+    Lazy_models<16, 16> return_number;
+    Lazy_models<1, 13> return_number_gps_same;
+    Lazy_models<64, 256> classification;
+    Lazy_models<64, 64> flags;
+    Lazy_models<64, 256> user_data;
+    Lazy_models<1, GPS_SYMBOLS> gps_multi;
+    Lazy_models<1, 5> gps_0diff;
+
+    Integer_decompressor dx, dy, z, intensity, scan_angle, point_source, gps;
+  };
+
+  // A channel's first use in a chunk: every model fresh, every prediction from `from`.
+  void activate(unsigned c, const Point14_record& from)
+  {
+    if(!m_channels[c])
+      m_channels[c].emplace(m_decoders.data());
+    Channel& ch = *m_channels[c];
+    ch.last = from;
+    ch.last.gps_time_changed = false;
+    ch.last_intensity.fill(from.intensity);
+    ch.last_z.fill(std::int32_t(from.z));
+    for(Streaming_median5& s : ch.x_median)
+      s.reset();
+    for(Streaming_median5& s : ch.y_median)
+      s.reset();
+    ch.gps_last = {from.gps_time, 0, 0, 0};
+    ch.gps_diff = {0, 0, 0, 0};
+    ch.gps_extremes = {0, 0, 0, 0};
+    ch.gps_current = ch.gps_next = 0;
+    ch.changed_values.reset();
+    ch.scanner_channel.reset();
+    ch.number_of_returns.reset();
+    ch.return_number.reset();
+    ch.return_number_gps_same.reset();
+    ch.classification.reset();
+    ch.flags.reset();
+    ch.user_data.reset();
+    ch.gps_multi.reset();
+    ch.gps_0diff.reset();
+    ch.dx.init();
+    ch.dy.init();
+    // The other decompressors only ever decode from their own layers.
+    if(m_has[Z_LAYER])
+      ch.z.init();
+    if(m_has[INTENSITY_LAYER])
+      ch.intensity.init();
+    if(m_has[SCAN_ANGLE_LAYER])
+      ch.scan_angle.init();
+    if(m_has[POINT_SOURCE_LAYER])
+      ch.point_source.init();
+    if(m_has[GPS_TIME_LAYER])
+      ch.gps.init();
+    m_active[c] = true;
+  }
+
+  // 32-bit products of the predictions wrap, as the encoder's do.
+  static std::int32_t times(std::int32_t a, std::int32_t b) { return std::int32_t(std::uint32_t(a) * std::uint32_t(b)); }
+
+  static void count_extreme(Channel& ch, unsigned s, std::int32_t diff)
+  {
+    // A difference far from the last one several times in a row becomes the new reference.
+    if(++ch.gps_extremes[s] > 3)
+    {
+      ch.gps_diff[s] = diff;
+      ch.gps_extremes[s] = 0;
+    }
+  }
+
+  void decode_full_gps_time(Channel& ch)
+  {
+    const unsigned s = ch.gps_current;
+    ch.gps_next = (ch.gps_next + 1) & 3u;
+    const std::int32_t high = ch.gps.decompress(std::int32_t(std::uint32_t(ch.gps_last[s] >> 32)), 8);
+    ch.gps_last[ch.gps_next] = (std::uint64_t(std::uint32_t(high)) << 32) | m_decoders[GPS_TIME_LAYER].read_int();
+    ch.gps_current = ch.gps_next;
+    ch.gps_diff[ch.gps_current] = 0;
+    ch.gps_extremes[ch.gps_current] = 0;
+  }
+
+  void decode_gps_time(Channel& ch)
+  {
+    Arithmetic_decoder& d = m_decoders[GPS_TIME_LAYER];
+    // An encoder jumps to another sequence only to one where the time then fits; more than one jump
+    // for a point is damage (and bounding the loop keeps such damage cheap).
+    for(int jumps = 0; jumps < 4; ++jumps)
+    {
+      const unsigned s = ch.gps_current;
+      if(ch.gps_diff[s] == 0)
+      {
+        const unsigned code = d.decode_symbol(ch.gps_0diff[0]); // 0..4
+        if(code == 0)
+        {
+          ch.gps_diff[s] = ch.gps.decompress(0, 0);
+          ch.gps_last[s] += std::uint64_t(std::int64_t(ch.gps_diff[s]));
+          ch.gps_extremes[s] = 0;
+          return;
+        }
+        if(code == 1)
+        {
+          decode_full_gps_time(ch);
+          return;
+        }
+        ch.gps_current = (s + code - 1) & 3u;
+        continue;
+      }
+      const unsigned code = d.decode_symbol(ch.gps_multi[0]); // 0..514
+      if(code == 1)
+      {
+        ch.gps_last[s] += std::uint64_t(std::int64_t(ch.gps.decompress(ch.gps_diff[s], 1)));
+        ch.gps_extremes[s] = 0;
+        return;
+      }
+      if(code < GPS_FULL)
+      {
+        std::int32_t diff;
+        if(code == 0)
+        {
+          diff = ch.gps.decompress(0, 7);
+          count_extreme(ch, s, diff);
+        }
+        else if(code < unsigned(GPS_MULTI))
+          diff = ch.gps.decompress(times(std::int32_t(code), ch.gps_diff[s]), code < 10 ? 2 : 3);
+        else if(code == unsigned(GPS_MULTI))
+        {
+          diff = ch.gps.decompress(times(GPS_MULTI, ch.gps_diff[s]), 4);
+          count_extreme(ch, s, diff);
+        }
+        else
+        {
+          const std::int32_t multi = GPS_MULTI - std::int32_t(code); // -1 .. -10
+          if(multi > GPS_MULTI_MINUS)
+            diff = ch.gps.decompress(times(multi, ch.gps_diff[s]), 5);
+          else
+          {
+            diff = ch.gps.decompress(times(GPS_MULTI_MINUS, ch.gps_diff[s]), 6);
+            count_extreme(ch, s, diff);
+          }
+        }
+        ch.gps_last[s] += std::uint64_t(std::int64_t(diff));
+        return;
+      }
+      if(code == GPS_FULL)
+      {
+        decode_full_gps_time(ch);
+        return;
+      }
+      ch.gps_current = (s + code - GPS_FULL) & 3u;
+    }
+    throw Decode_error("a GPS time that jumps between time sequences again and again");
+  }
+
+  std::array<Arithmetic_decoder, LAYER_COUNT> m_decoders;
+  std::array<bool, LAYER_COUNT> m_has{};
+  std::array<std::optional<Channel>, 4> m_channels;
+  std::array<bool, 4> m_active{};
+  unsigned m_current = 0;
+};
+
+} // namespace laz
+} // namespace internal
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+/// \endcond
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_POINT14_ITEMS_H

@@ -1,0 +1,380 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// LAZ input: every LAZ file of the shared data decodes to the SHA-256 of its records that an
+// independent LASzip implementation gave (../shared/data/laz/README.md), on one thread and on
+// several; reads like its uncompressed twin through read_oriented_point_set(); damaged files (cut,
+// bytes flipped in a chunk, a lying chunk table, empty chunks, a layer that overruns its chunk) give
+// an Input_error naming the chunk, never a crash. Skipped when ../shared/data is not there.
+
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/decode_chunks.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_las.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
+
+#include <catch2/catch.hpp>
+
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace SN = CGAL::Sigmoid_neighborhoods;
+
+namespace {
+
+const std::string LAZ_DIR = SN_SHARED_DATA_DIR "/laz/";
+
+bool have_laz_data()
+{
+  if(std::filesystem::exists(LAZ_DIR + "simple.laz") && std::system("sha256sum --version > /dev/null 2>&1") == 0)
+    return true;
+  WARN("../shared/data/laz or sha256sum not found: LAZ tests skipped");
+  return false;
+}
+
+// A folder of this run's files, removed at exit.
+const std::string& laz_scratch()
+{
+  struct Scratch
+  {
+    std::string root;
+    ~Scratch()
+    {
+      std::error_code ec;
+      std::filesystem::remove_all(root, ec);
+    }
+  };
+  static Scratch scratch;
+  static const std::string dir = [] {
+    char name[] = "/tmp/sn_laz_XXXXXX";
+    const char* made = ::mkdtemp(name);
+    REQUIRE(made != nullptr);
+    scratch.root = made;
+    return std::string(made);
+  }();
+  return dir;
+}
+
+std::string file_bytes(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string write_bytes(const std::string& name, const std::string& bytes)
+{
+  const std::string path = laz_scratch() + "/" + name;
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(bytes.data(), std::streamsize(bytes.size()));
+  return path;
+}
+
+// coreutils' SHA-256 of `bytes`, in hexadecimal.
+std::string sha256(const std::string& bytes)
+{
+  const std::string path = write_bytes("records.bin", bytes);
+  FILE* pipe = ::popen(("sha256sum '" + path + "'").c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  char hex[65] = {};
+  const std::size_t read = std::fread(hex, 1, 64, pipe);
+  ::pclose(pipe);
+  REQUIRE(read == 64);
+  return hex;
+}
+
+// The point records of a LAS or LAZ file as an uncompressed file stores them, decoded on `threads`.
+std::string decoded_records(const std::string& path, unsigned int threads)
+{
+  std::ifstream in(path, std::ios::binary);
+  const SN::internal::Las_header h = SN::internal::read_las_header(in, std::filesystem::file_size(path));
+  std::string records;
+  std::size_t next = 0;
+  SN::internal::for_each_las_record_block(in, h, threads,
+                                          [&](std::size_t first, const unsigned char* r, std::size_t count) {
+                                            CHECK(first == next);
+                                            next = first + count;
+                                            records.append(reinterpret_cast<const char*>(r), count * h.record_length);
+                                          });
+  CHECK(next == h.point_count);
+  return records;
+}
+
+std::string input_error(const std::string& path)
+{
+  try
+  {
+    SN::read_oriented_point_set(path, 0);
+  }
+  catch(const SN::Input_error& e)
+  {
+    return e.what();
+  }
+  return "read";
+}
+
+struct Laz_file
+{
+  const char* name;
+  unsigned int format;
+  std::uint64_t points;
+  const char* records_sha256;
+};
+
+// ../shared/data/laz/README.md's table.
+const Laz_file LAZ_FILES[] = {
+  {"1_4_w_evlr.laz", 6, 1000, "923571fd0bdbfdc886522adcb5fccaa6462642142937b1a3c490519155d447ba"},
+  {"autzen_trim.laz", 3, 110000, "f4eb6d80bf1fa507ffdcdaa73606d09041982659a50ee3895957e0b2b347f54b"},
+  {"extra.laz", 3, 1065, "c98294910637458e4b55447460f2dece893aca5990f4fd5624fec7d570783c31"},
+  {"las_with_several_extra_byte_bloc.laz", 8, 697721,
+   "c19b99bc99062598ede4bed3bc6648832211f51b80ac22c8095cb547d8836406"},
+  {"plane.laz", 3, 28185, "933d0f7f9519699d14522520a7bb36e798bb07b9a7d60aab2a8b7e98a4d94e6b"},
+  {"simple.copc.laz", 7, 1065, "361eda6829430490b1bba3a2665408642d16211f6c349b2f11edf451c8164422"},
+  {"simple.laz", 3, 1065, "0717948a72e6bf719db8d96ded1e76b760d73fb683347ebe3dd603832e3d5015"},
+  {"test_data_0436_6384_LA93_IGN69_single_point.laz", 8, 1,
+   "3ac60a853fa91bd5cc1b633c518167590ea5734ae284efce064a4fe4628ece8c"},
+  {"test_data_77050_627755_LA93_IGN69.laz", 8, 73355,
+   "ebc159a692f984483c7cb52debad805d39e49831735476fa65c2ec031ba5a388"},
+  {"test_data_77050_627760_LA93_IGN69.laz", 8, 56035,
+   "257b6e0ed581860897019032e168985a2ae185105d55b4256fdd3a35fe31d978"},
+  {"test_data_77055_627755_LA93_IGN69.laz", 8, 72770,
+   "3e31031b3ace1abacd5305abd7afdd9a1e050e0d63e6a04fb01ccbb1a3c3e76f"},
+  {"test_data_77055_627755_LA93_IGN69_extra_dims.laz", 8, 72770,
+   "7e8ee68b5fd2ed04ddca8f46afde17cf8e3494c6cc978cd640c6052e9ebb9240"},
+  {"test_data_77055_627760_LA93_IGN69.laz", 8, 60653,
+   "9bffe76250c4c2352b182b8f98beaa5e576259d18b876601b292807e85512e28"},
+  {"test_data_77060_627755_LA93_IGN69.laz", 8, 83518,
+   "128aebd5e28db9faa0e354442d6a2518df093dde581d74cb5c457064fd986a5d"},
+  {"test_data_77060_627760_LA93_IGN69.laz", 8, 59606,
+   "98b571773ae9c4e5b7f2f94fbe93a8e2293a1be2e0c5ca8cc53917addfff532c"},
+  {"test_semis_2023_0292_6833_LA93_IGN69.laz", 6, 289055,
+   "230742cf40d7f525ba1dd2cc11025236f75a6b2eebc9baf4aa88ea3477c0e88b"},
+  {"test_semis_2023_0292_6833_LA93_IGN69_extra_dims.laz", 6, 289055,
+   "c391f323ff92be83e89bd5651e1c76fc7e9681d99ca12a5e5583a3cd33531ff1"},
+};
+
+void check_same_points(const SN::Oriented_point_set& a, const SN::Oriented_point_set& b)
+{
+  REQUIRE(a.points.size() == b.points.size());
+  CHECK(a.points == b.points);
+  CHECK(a.labels == b.labels);
+  CHECK(a.intensities == b.intensities);
+  CHECK(a.return_numbers == b.return_numbers);
+  CHECK(a.numbers_of_returns == b.numbers_of_returns);
+  CHECK(a.gps_times == b.gps_times);
+  CHECK(a.merged_duplicates == b.merged_duplicates);
+}
+
+} // namespace
+
+TEST_CASE("LAZ: every file of the shared data decodes to its records' SHA-256, on 1 and 3 threads", "[laz][io]")
+{
+  if(!have_laz_data())
+    return;
+  for(const Laz_file& f : LAZ_FILES)
+  {
+    INFO(f.name);
+    const std::string path = LAZ_DIR + f.name;
+    const SN::internal::Las_header h = SN::internal::read_las_header(path);
+    CHECK(h.compressed);
+    CHECK(h.point_format == f.format);
+    CHECK(h.point_count == f.points);
+    const std::string one = decoded_records(path, 1);
+    CHECK(one.size() == f.points * h.record_length);
+    CHECK(sha256(one) == f.records_sha256);
+    if(f.points > 50000) // several chunks
+      CHECK(decoded_records(path, 3) == one);
+  }
+}
+
+TEST_CASE("LAZ: reads like its uncompressed twin, through read_oriented_point_set()", "[laz][io]")
+{
+  if(!have_laz_data())
+    return;
+  const std::pair<std::string, std::string> twins[] = {
+    {LAZ_DIR + "simple.laz", LAZ_DIR + "simple.las"},
+    {LAZ_DIR + "1_4_w_evlr.laz", LAZ_DIR + "1_4_w_evlr.las"},
+    {LAZ_DIR + "extra.laz", LAZ_DIR + "extrabytes.las"},
+    {LAZ_DIR + "test_data_77050_627755_LA93_IGN69.laz", SN_SHARED_DATA_DIR "/labeled/ign_lidarhd_77050_627755.las"},
+    {LAZ_DIR + "test_data_77060_627760_LA93_IGN69.laz", SN_SHARED_DATA_DIR "/labeled/ign_lidarhd_77060_627760.las"},
+  };
+  for(const auto& twin : twins)
+  {
+    INFO(twin.first);
+    if(!std::filesystem::exists(twin.second))
+      continue;
+    CHECK(decoded_records(twin.first, 2) == decoded_records(twin.second, 2));
+    SN::Normal_options options;
+    options.neighbors = 0;
+    options.threads = 2;
+    const SN::Oriented_point_set laz = SN::read_oriented_point_set(twin.first, options);
+    options.threads = 1;
+    const SN::Oriented_point_set las = SN::read_oriented_point_set(twin.second, options);
+    CHECK(!laz.labels.empty());
+    check_same_points(laz, las);
+  }
+  // The IGN tile's classes, as its twin has them (2 ground, 3-5 vegetation, 6 building...)
+  const SN::Oriented_point_set tile = SN::read_oriented_point_set(LAZ_DIR + "test_data_77050_627755_LA93_IGN69.laz", 0);
+  CHECK(tile.points.size() + tile.merged_duplicates == 73355);
+}
+
+TEST_CASE("LAZ: wave packets are refused with a message that says so", "[laz][io]")
+{
+  if(!have_laz_data())
+    return;
+  const std::string message = input_error(LAZ_DIR + "fullwave.laz");
+  INFO(message);
+  CHECK(message.find("wave packets") != std::string::npos);
+}
+
+TEST_CASE("LAZ: damaged files are refused with the chunk named, never a crash", "[laz][io][limits]")
+{
+  if(!have_laz_data())
+    return;
+  const auto has = [](const std::string& message, const std::string& piece) {
+    INFO(message);
+    CHECK(message.find(piece) != std::string::npos);
+  };
+  // A damage that may decode to other points (LAZ has no checksums) or be caught: never a crash,
+  // and when caught, the chunk is named.
+  const auto refused_or_read = [](const std::string& message) {
+    INFO(message);
+    CHECK((message == "read" || message.find("chunk") != std::string::npos));
+  };
+  const auto put32 = [](std::string& b, std::size_t at, std::uint32_t v) {
+    for(int i = 0; i < 4; ++i)
+      b[at + i] = char((v >> (8 * i)) & 0xFF);
+  };
+  const auto get32 = [](const std::string& b, std::size_t at) {
+    std::uint32_t v = 0;
+    for(int i = 4; i-- > 0;)
+      v = (v << 8) | std::uint8_t(b[at + i]);
+    return v;
+  };
+
+  for(const char* name : {"simple.laz", "test_data_77050_627755_LA93_IGN69.laz"})
+  {
+    INFO(name);
+    const std::string good = file_bytes(LAZ_DIR + name);
+    const std::uint32_t points_at = get32(good, 96);
+    const std::uint32_t table = get32(good, points_at); // below 2^32 in these files
+    const std::size_t record = std::uint8_t(good[105]) | (std::size_t(std::uint8_t(good[106])) << 8);
+    const std::size_t first_chunk = points_at + 8;
+    const auto spoiled = [&](const std::string& file, const std::function<void(std::string&)>& spoil) {
+      std::string b = good;
+      spoil(b);
+      return input_error(write_bytes(file, b));
+    };
+
+    CHECK(spoiled("good.laz", [](std::string&) {}) == "read");
+    // streamed: the table's offset -1 at the start, the offset in the file's last 8 bytes
+    {
+      std::string b = good;
+      for(int i = 0; i < 8; ++i)
+        b[points_at + i] = char(0xFF);
+      for(int i = 0; i < 8; ++i)
+        b.push_back(char(i < 4 ? (table >> (8 * i)) & 0xFF : 0));
+      CHECK(decoded_records(write_bytes("streamed.laz", b), 2) == decoded_records(LAZ_DIR + name, 1));
+    }
+    // cut in the chunks: the chunk table is gone
+    has(spoiled("cut.laz", [&](std::string& b) { b.resize(first_chunk + (table - first_chunk) / 2); }),
+        "past the end of a file of");
+    // cut in the chunk table
+    has(spoiled("cut_table.laz", [&](std::string& b) { b.resize(table + 6); }), "past the end of a file of");
+    // the table's offset into the header, past the end, and to itself (a writer that stopped)
+    has(spoiled("table_in_header.laz", [&](std::string& b) { put32(b, points_at, 100); }),
+        "a chunk table at byte 100, before the first chunk");
+    has(spoiled("table_past_end.laz", [&](std::string& b) { put32(b, points_at, std::uint32_t(good.size() + 10)); }),
+        "past the end of a file of");
+    has(spoiled("no_table.laz", [&](std::string& b) { put32(b, points_at, points_at); }), "no chunk table");
+    // a chunk count of 2^32 - 1, and one more chunk than the points need
+    has(spoiled("chunks_max.laz", [&](std::string& b) { put32(b, table + 4, 0xFFFFFFFFu); }),
+        "a chunk table of 4294967295 chunks");
+    has(spoiled("chunks_more.laz", [&](std::string& b) { put32(b, table + 4, get32(good, table + 4) + 1); }),
+        "chunks");
+    has(spoiled("table_version.laz", [&](std::string& b) { put32(b, table, 7); }), "chunk table version 7");
+    // the chunk table's coded sizes replaced: sizes that overrun, or none that fits
+    has(spoiled("table_garbage.laz", [&](std::string& b) {
+          for(std::size_t i = table + 8; i < b.size() && i < table + 24; ++i)
+            b[i] = char(0xFF);
+        }),
+        "chunk 0 of");
+    has(spoiled("table_zeros.laz", [&](std::string& b) {
+          for(std::size_t i = table + 8; i < b.size(); ++i)
+            b[i] = 0;
+        }),
+        "chunk 0 of");
+    // bytes flipped in the first chunk's coded part, and the chunk's coded part zeroed
+    for(std::size_t at : {first_chunk + record + 2, first_chunk + record + 40, (first_chunk + table) / 2})
+      refused_or_read(spoiled("flipped.laz", [&](std::string& b) {
+        for(std::size_t i = at; i < at + 16 && i < table; ++i)
+          b[i] = char(~b[i]);
+      }));
+    refused_or_read(spoiled("zeroed.laz", [&](std::string& b) {
+      for(std::size_t i = first_chunk + record; i < table; ++i)
+        b[i] = 0;
+    }));
+    // a point more in the header than in the chunks: the last chunk runs out of bytes (point-wise) or
+    // holds another count (layered)
+    has(spoiled("more_points.laz", [&](std::string& b) {
+          put32(b, 107, get32(good, 107) + 1);
+          if(b[25] == 4)
+            put32(b, 247, get32(good, 247) + 1);
+        }),
+        std::string(name) == "simple.laz" ? "chunk 0 of 1, bytes 341 to 18203: the arithmetic decoder reads past"
+                                          : "chunk 1 of 2, bytes 216823 to 309595: the chunk says it holds 23355 points");
+    // no LASzip record: its record id changed
+    has(spoiled("no_laszip.laz", [&](std::string& b) {
+          const std::size_t header = std::uint8_t(b[94]) | (std::size_t(std::uint8_t(b[95])) << 8);
+          for(std::size_t at = header; at + 54 <= points_at;)
+          {
+            if(std::uint8_t(b[at + 18]) == 0xBC && std::uint8_t(b[at + 19]) == 0x56)
+              b[at + 18] = 0;
+            at += 54 + (std::uint8_t(b[at + 20]) | (std::size_t(std::uint8_t(b[at + 21])) << 8));
+          }
+        }),
+        "without the LASzip record");
+  }
+
+  // The layered compressor: a layer size past the chunk's bytes. In the IGN tile, the first chunk
+  // holds its first point raw (38 bytes), its point count, then the layers' sizes.
+  {
+    const std::string good = file_bytes(LAZ_DIR + "test_data_77050_627755_LA93_IGN69.laz");
+    const std::uint32_t points_at = get32(good, 96);
+    const std::size_t sizes = points_at + 8 + 38 + 4;
+    for(std::size_t layer : {0, 1, 9})
+    {
+      std::string b = good;
+      put32(b, sizes + 4 * layer, 0x7FFFFFF0u);
+      const std::string message = input_error(write_bytes("layer_overrun.laz", b));
+      has(message, "chunk 0 of 2");
+    }
+    std::string b = good;
+    put32(b, points_at + 8 + 38, 49999); // the chunk's own point count
+    has(input_error(write_bytes("chunk_count.laz", b)), "chunk 0 of 2");
+  }
+
+  // Chunks of no bytes and of a few, straight to the decoders: the coder reads past its bytes.
+  {
+    std::ifstream in(LAZ_DIR + "simple.laz", std::ios::binary);
+    const SN::internal::Las_header h = SN::internal::read_las_header(in, std::filesystem::file_size(LAZ_DIR + "simple.laz"));
+    SN::internal::laz::Layout layout = SN::internal::read_laz_layout(in, h);
+    REQUIRE(layout.chunk_count() == 1);
+    for(std::uint64_t bytes : {std::uint64_t(0), std::uint64_t(h.record_length), std::uint64_t(h.record_length + 5)})
+    {
+      SN::internal::laz::Layout cut = layout;
+      cut.chunk_starts[1] = cut.chunk_starts[0] + bytes;
+      CHECK_THROWS_WITH(SN::internal::laz::for_each_decoded_chunk(in, cut, h.record_length, 1,
+                                                                 [](std::size_t, const unsigned char*, std::size_t) {}),
+                        Catch::Contains("chunk 0 of 1"));
+    }
+  }
+}
