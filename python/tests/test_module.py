@@ -335,6 +335,24 @@ def test_read_a_labeled_las_tile():
     assert 770500 <= model["points"][:, 0].min() and model["points"][:, 0].max() <= 770541.69
 
 
+def test_read_a_laz_tile_like_its_las_twin():
+    las = sn.read(needs(SHARED_DATA / "labeled/ign_lidarhd_77050_627755.las"), k=0)
+    for threads in (1, 2):
+        laz = sn.read(needs(SHARED_DATA / "laz/test_data_77050_627755_LA93_IGN69.laz"), k=0, threads=threads)
+        for field in ("points", "labels", "intensity", "return_number", "number_of_returns", "gps_time"):
+            assert np.array_equal(laz[field], las[field]), field
+        assert laz["merged_duplicates"] == las["merged_duplicates"]
+
+
+def test_read_refuses_wave_packets_and_damaged_laz(tmp_path):
+    with pytest.raises(OSError, match="wave packets"):
+        sn.read(needs(SHARED_DATA / "laz/fullwave.laz"), k=0)
+    cut = tmp_path / "cut.laz"
+    cut.write_bytes(needs(SHARED_DATA / "laz/simple.laz").read_bytes()[:9000])
+    with pytest.raises(OSError, match="cannot decode the file as laz"):
+        sn.read(cut, k=0)
+
+
 def test_read_estimates_zero_normals_from_their_neighbors(fandisk, tmp_path):
     points, normals = fandisk
     xyz = tmp_path / "zero.xyz"

@@ -71,7 +71,7 @@ grep -q "828 trailer bytes each" "$dir/check.txt" || fail "EVLR: $(cat "$dir/che
 # refusals: exit 2, one line, no tile written
 expect_refusal "cannot open" "$tool" catalog retile "$dir/absent.las" --size 10 -o "$dir/refused"
 cp "$input" "$dir/tile.laz"
-expect_refusal "LAZ (compressed LAS) is not read" "$tool" catalog retile "$dir/tile.laz" --size 10 -o "$dir/refused"
+expect_refusal "catalog retile copies the records of an uncompressed LAS file" "$tool" catalog retile "$dir/tile.laz" --size 10 -o "$dir/refused"
 "$python" -c "import sys; d=bytearray(open(sys.argv[1],'rb').read()); d[104]|=0x80; open(sys.argv[2],'wb').write(d)" \
   "$input" "$dir/compressed.las"
 expect_refusal "compressed" "$tool" catalog retile "$dir/compressed.las" --size 10 -o "$dir/refused"
