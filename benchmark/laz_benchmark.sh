@@ -16,6 +16,7 @@ tool=$build/tools/sigmoid-neighborhoods/sigmoid-neighborhoods
 bench=$build/benchmark/laz_decode_benchmark
 [ -x "$bench" ] && [ -x "$tool" ] || { echo "build $build first (make build)" >&2; exit 1; }
 [ -d "$data/laz" ] || { echo "$data/laz not found" >&2; exit 1; }
+data=$(cd "$data" && pwd) # node runs in the scratch folder
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 laz=$data/laz
@@ -59,7 +60,7 @@ const fs = require('fs');
 EOF
   echo "file                                                    points     decode_s    Mpoints/s"
   # shellcheck disable=SC2086
-  (cd "$scratch" && node laz_perf.js $files)
+  (cd "$scratch" && node laz_perf.js $files 2>&1 | cut -c1-200)
 else
   echo "npm or node missing, or laz-perf not installed: skipped"
 fi
