@@ -400,7 +400,8 @@ int run_classify_experiment(int argc, char** argv)
 {
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT + 1,
                        with_normal_options({"-o", "--output", "--train", "--test", "--sets", "--orders", "--graphcut",
-                                            "--labels", "--trees", "--depth", "--threads", "--cv-orders"}),
+                                            "--labels", "--trees", "--depth", "--threads", "--cv-orders",
+                                            "--max-per-class"}),
                        with_normal_flags({"-h", "--help"}), NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, CLASSIFY_USAGE))
     return EXIT_OK;
@@ -421,6 +422,7 @@ int run_classify_experiment(int argc, char** argv)
   base.features.threads = read_threads(args);
   base.trees = args.get_unsigned("--trees", 25);
   base.depth = args.get_unsigned("--depth", 20);
+  base.max_per_class = args.get_unsigned("--max-per-class", 0);
   std::vector<std::string> groups;
   for(const Feature_set_spec& set : sets)
     for(const std::string& g : set.groups)

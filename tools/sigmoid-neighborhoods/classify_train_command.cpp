@@ -36,7 +36,7 @@ int run_classify_train(int argc, char** argv)
 {
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT + 1,
                        with_normal_options({"-o", "--output", "--labels", "--features", "--trees", "--depth",
-                                            "--feature-order-seed", "--threads"}),
+                                            "--feature-order-seed", "--max-per-class", "--threads"}),
                        with_normal_flags({"-h", "--help"}), NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, CLASSIFY_USAGE))
   {
@@ -55,6 +55,7 @@ int run_classify_train(int argc, char** argv)
   t.settings.trees = args.get_unsigned("--trees", 25);
   t.settings.depth = args.get_unsigned("--depth", 20);
   t.settings.feature_order_seed = args.get_unsigned("--feature-order-seed", 0);
+  t.settings.max_per_class = args.get_unsigned("--max-per-class", 0);
   if(t.settings.trees < 1 || t.settings.depth < 1)
     throw Usage_error("--trees and --depth must be at least 1");
   std::vector<Featured_file> files;
@@ -71,7 +72,9 @@ int run_classify_train(int argc, char** argv)
     feature_seconds += f.seconds_features;
   }
   std::cerr << output << ": " << t.settings.feature_names.size() << " features, " << t.settings.labels.names.size()
-            << " classes, " << points << " points from " << files.size() << " file(s); features "
+            << " classes, " << points << " points from " << files.size() << " file(s)"
+            << (t.training_points != points ? " (" + std::to_string(t.training_points) + " trained on)" : std::string())
+            << "; features "
             << number_fixed(feature_seconds, 1) << " s, training " << number_fixed(t.seconds, 1) << " s\n";
   return EXIT_OK;
 }

@@ -34,6 +34,7 @@ struct Classifier_settings
   std::vector<std::string> feature_names; // in the order the forest reads them
   unsigned int trees = 25, depth = 20;
   unsigned int feature_order_seed = 0;
+  unsigned int max_per_class = 0; // training points per class at most (0: all), evenly spaced
 };
 
 inline nlohmann::json settings_json(const Classifier_settings& s)
@@ -52,6 +53,7 @@ inline nlohmann::json settings_json(const Classifier_settings& s)
   j["trees"] = s.trees;
   j["depth"] = s.depth;
   j["feature_order_seed"] = s.feature_order_seed;
+  j["max_per_class"] = s.max_per_class;
   return j;
 }
 
@@ -113,6 +115,7 @@ inline Classifier_settings settings_from_json(const nlohmann::json& j, const std
     s.trees = j.at("trees").get<unsigned int>();
     s.depth = j.at("depth").get<unsigned int>();
     s.feature_order_seed = j.at("feature_order_seed").get<unsigned int>();
+    s.max_per_class = j.value("max_per_class", 0u); // absent from older models
     if(s.feature_names.empty())
       throw bad("no features");
     return s;

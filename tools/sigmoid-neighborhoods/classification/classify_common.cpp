@@ -17,6 +17,10 @@
 
 #include <nlohmann/json.hpp>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -133,6 +137,32 @@ std::vector<Feature_column> concatenated(const std::vector<Featured_file>& files
   return result;
 }
 
+// At most `cap` training points per class (0: all), evenly spaced in the files' order (a scan's order
+// sweeps the ground: the kept points cover the survey), the others marked -1, which CGAL's training
+// skips. Deterministic: the same points for any thread count and run.
+void cap_points_per_class(std::vector<int>& truth, std::size_t classes, std::size_t cap)
+{
+  if(cap == 0)
+    return;
+  std::vector<std::size_t> count(classes, 0), seen(classes, 0), kept(classes, 0);
+  for(int c : truth)
+    if(c >= 0)
+      ++count[std::size_t(c)];
+  for(int& c : truth)
+  {
+    if(c < 0 || count[std::size_t(c)] <= cap)
+      continue;
+    const std::size_t k = std::size_t(c);
+    // the point of rank r is kept when floor((r + 1) cap / n) passes a new integer: cap points in all
+    const std::size_t wanted = (seen[k] + 1) * cap / count[k];
+    ++seen[k];
+    if(wanted > kept[k])
+      ++kept[k];
+    else
+      c = -1;
+  }
+}
+
 } // namespace
 
 void train(const std::vector<Featured_file>& files, Trained& t)
@@ -152,12 +182,24 @@ void train(const std::vector<Featured_file>& files, Trained& t)
     if(per_class[c] == 0)
       throw Usage_error("no training point of class '" + t.settings.labels.names[c] + "' (codes " +
                         t.settings.labels.text() + ")");
-  progress("training " + std::to_string(t.settings.trees) + " trees on " + std::to_string(truth.size()) + " points");
+  cap_points_per_class(truth, per_class.size(), t.settings.max_per_class);
+  const std::size_t used = std::size_t(std::count_if(truth.begin(), truth.end(), [](int c) { return c >= 0; }));
+  progress("training " + std::to_string(t.settings.trees) + " trees on " + std::to_string(used) + " points");
   CGAL::Real_timer timer;
   timer.start();
   t.forest = std::make_unique<Forest>(t.labels, t.features);
-  t.forest->train<CGAL::Parallel_if_available_tag>(truth, true, t.settings.trees, t.settings.depth);
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    // --threads bounds the trees trained at once; the forest does not depend on it
+    std::unique_ptr<tbb::global_control> limit;
+    if(t.settings.features.threads != 0)
+      limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                    t.settings.features.threads);
+#endif
+    t.forest->train<CGAL::Parallel_if_available_tag>(truth, true, t.settings.trees, t.settings.depth);
+  }
   t.seconds = timer.time();
+  t.training_points = used;
 }
 
 Prediction predict(const Featured_file& file, const Classifier_settings& settings, const std::string& forest_bytes,

@@ -27,6 +27,7 @@ struct Trained
   CGAL::Classification::Feature_set features;
   std::unique_ptr<Forest> forest;
   double seconds = 0.;
+  std::size_t training_points = 0; // after --max-per-class
 };
 
 void train(const std::vector<Featured_file>& files, Trained& t);
