@@ -22,17 +22,19 @@ start=$(date +%s)
 
 "$tool" catalog list "$labeled" --names > "$dir/names.txt" || fail "catalog list"
 [ "$(wc -l < "$dir/names.txt")" -eq 6 ] || fail "not 6 tiles: $(cat "$dir/names.txt")"
+first_tile=$(head -1 "$dir/names.txt")
 
-# predict_and_compare MODEL NAME: every tile with its halo, then the union, into $dir/NAME/
+# predict_and_compare MODEL NAME [OPTIONS]: every tile with its halo (and OPTIONS), then the union, into $dir/NAME/
 predict_and_compare() {
   model=$1
   label=$2
+  options=${3:-}
   out="$dir/$label"
   mkdir -p "$out/tiles"
   set --
   while read -r name; do
     "$tool" classify predict "$dir/$model" --catalog "$labeled" --tile "$name" -o "$out/tiles/$name.ply" \
-      2> "$out/tiles/$name.txt" || fail "predict $name ($label): $(cat "$out/tiles/$name.txt")"
+      $options 2> "$out/tiles/$name.txt" || fail "predict $name ($label): $(cat "$out/tiles/$name.txt")"
     grep -q '"exact": true' "$out/tiles/$name.tile.json" || fail "$name ($label): no exact tile description"
     grep -q '"command": "classify predict"' "$out/tiles/$name.tile.json" || fail "$name ($label): not classify predict"
     set -- "$@" "$out/tiles/$name.ply"
@@ -84,7 +86,13 @@ tiles_done=$(date +%s)
   --trees 4 --depth 12 2> "$dir/train_pyramid.txt" || fail "train pyramid: $(cat "$dir/train_pyramid.txt")"
 grep -q '"pyramid":{"cell":0.5,"cell_sizes":\[0.5,1.0,2.0,4.0,8.0\],"k":10,"levels":5}' "$dir/pyramid.bin" \
   || fail "the pyramid model does not store its cell sizes"
-predict_and_compare pyramid.bin pyramid
+# the tiles from a 10 m halo (too narrow: read again, wider), then one from the default first halo
+predict_and_compare pyramid.bin pyramid "--halo 10"
+grep -q ' readings, ' "$dir/pyramid/tiles/$first_tile.txt" || fail "a 10 m halo was enough for the pyramid"
+"$tool" classify predict "$dir/pyramid.bin" --catalog "$labeled" --tile "$first_tile" -o "$dir/pyramid_default.ply" \
+  2> "$dir/pyramid_default.txt" || fail "predict $first_tile (pyramid): $(cat "$dir/pyramid_default.txt")"
+cmp -s "$dir/pyramid_default.ply" "$dir/pyramid/tiles/$first_tile.ply" \
+  || fail "the pyramid's tile from the default halo differs from the one from 10 m"
 end=$(date +%s)
 echo "train + 6 tiles + union: $((tiles_done - start)) s, the pyramid's: $((end - tiles_done)) s"
 

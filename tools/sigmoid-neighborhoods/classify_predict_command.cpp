@@ -74,7 +74,8 @@ int run_classify_predict(int argc, char** argv)
   progress("reading");
   // the normals' neighbor rows kept for the features; a tile's halo holds them and the height cells,
   // and is widened until the pyramid's representatives and rows near the tile are checked to be the union's
-  double minimum_halo = cell_halo(settings.features);
+  // --halo WIDTH: the pyramid's first halo too (the heights' cells still hold)
+  double minimum_halo = cell_halo(settings.features, !args.has("--halo"));
   Input_points in;
   unsigned int readings = 0;
   for(;;)

@@ -120,17 +120,21 @@ inline unsigned int largest_neighborhood(const Feature_options& o)
 // The halo the groups height and pyramid need around a tile (0: none). Height: a cell meeting the
 // tile lies within its side of the tile, so a halo that wide holds every point of the tile's cells.
 // The relative margin covers the rounding of x / side at the cells' borders while |x| / side stays
-// below 10^9. Pyramid: a first guess only, 6 coarsest cells (a point's nearest representative within
-// a cell's diagonal, 1.7 cells, and the k = 10 nearest of that one within about 2.5 cells on a
-// surface, plus their cells); pyramid_halo_width() (feature_groups.h) checks it on what was read.
-inline double cell_halo(const Feature_options& o)
+// below 10^9. Pyramid: a first guess only, 4 coarsest cells (a point's nearest representative within
+// a cell's diagonal, 1.7 cells, the k = 10 nearest of that one within about 2 cells on a surface, and
+// their cells; the six IGN tiles need 3.4 to 3.9); pyramid_halo_width() (feature_groups.h) checks it
+// on what was read, and the tile is read again with a wider halo when it does not hold.
+// `pyramid_guess` false: what the cells need alone (the caller gives the pyramid's first halo).
+inline double cell_halo(const Feature_options& o, bool pyramid_guess = true)
 {
   using internal_classification::has_group;
   double halo = 0.;
   if(has_group(o, "height"))
     halo = *std::max_element(o.cell_sizes.begin(), o.cell_sizes.end()) * (1. + 1e-6);
   if(internal_classification::has_pyramid(o))
-    halo = std::max(halo, 6. * o.pyramid_cell_sizes().back());
+    halo = std::max(halo, o.pyramid_cell_sizes().back() * (1. + 1e-6)); // the heights in its cells
+  if(pyramid_guess && internal_classification::has_pyramid(o))
+    halo = std::max(halo, 4. * o.pyramid_cell_sizes().back());
   return halo;
 }
 
