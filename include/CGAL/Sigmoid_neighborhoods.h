@@ -26,6 +26,8 @@
 #include <CGAL/Sigmoid_neighborhoods/Point_features.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_point_features.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_height_features.h>
+#include <CGAL/Sigmoid_neighborhoods/thin_on_voxel_grid.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_pyramid_features.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/evaluate_sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>

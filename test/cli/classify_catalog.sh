@@ -2,8 +2,8 @@
 # Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 # SPDX-License-Identifier: GPL-3.0-or-later
 #
-# classify predict on a catalog of tiles: a small model trained on one IGN tile predicts each tile with
-# its halo and the union in one run; the tiles' PLY vertices, concatenated in the catalog's order, equal
+# classify predict on a catalog of tiles: small models trained on one IGN tile (the package's k-neighbor
+# groups and heights; the pyramid groups) predict each tile with its halo and the union in one run; the tiles' PLY vertices, concatenated in the catalog's order, equal
 # the union's byte for byte (positions, labels, confidences, truth, colors). Then the refusals with
 # --tile (the group cgal, --graphcut): exit 2, one line, nothing written.
 # usage: classify_catalog.sh TOOL LABELED_FOLDER PYTHON
@@ -22,20 +22,27 @@ start=$(date +%s)
 
 "$tool" catalog list "$labeled" --names > "$dir/names.txt" || fail "catalog list"
 [ "$(wc -l < "$dir/names.txt")" -eq 6 ] || fail "not 6 tiles: $(cat "$dir/names.txt")"
-set --
-while read -r name; do
-  "$tool" classify predict "$dir/model.bin" --catalog "$labeled" --tile "$name" -o "$dir/tiles/$name.ply" \
-    2> "$dir/tiles/$name.txt" || fail "predict $name: $(cat "$dir/tiles/$name.txt")"
-  grep -q '"exact": true' "$dir/tiles/$name.tile.json" || fail "$name: no exact tile description"
-  grep -q '"command": "classify predict"' "$dir/tiles/$name.tile.json" || fail "$name: not classify predict"
-  set -- "$@" "$dir/tiles/$name.ply"
-done < "$dir/names.txt"
-tiles_done=$(date +%s)
-"$tool" classify predict "$dir/model.bin" --catalog "$labeled" -o "$dir/union.ply" 2> "$dir/union.txt" \
-  || fail "predict the union: $(cat "$dir/union.txt")"
-[ ! -e "$dir/union.tile.json" ] || fail "a tile description for the union"
+first_tile=$(head -1 "$dir/names.txt")
 
-"$python" - "$dir/union.ply" "$@" > "$dir/compare.txt" 2>&1 <<'EOF' || fail "$(cat "$dir/compare.txt")"
+# predict_and_compare MODEL NAME [OPTIONS]: every tile with its halo (and OPTIONS), then the union, into $dir/NAME/
+predict_and_compare() {
+  model=$1
+  label=$2
+  options=${3:-}
+  out="$dir/$label"
+  mkdir -p "$out/tiles"
+  set --
+  while read -r name; do
+    "$tool" classify predict "$dir/$model" --catalog "$labeled" --tile "$name" -o "$out/tiles/$name.ply" \
+      $options 2> "$out/tiles/$name.txt" || fail "predict $name ($label): $(cat "$out/tiles/$name.txt")"
+    grep -q '"exact": true' "$out/tiles/$name.tile.json" || fail "$name ($label): no exact tile description"
+    grep -q '"command": "classify predict"' "$out/tiles/$name.tile.json" || fail "$name ($label): not classify predict"
+    set -- "$@" "$out/tiles/$name.ply"
+  done < "$dir/names.txt"
+  "$tool" classify predict "$dir/$model" --catalog "$labeled" -o "$out/union.ply" 2> "$out/union.txt" \
+    || fail "predict the union ($label): $(cat "$out/union.txt")"
+  [ ! -e "$out/union.tile.json" ] || fail "a tile description for the union ($label)"
+  "$python" - "$out/union.ply" "$@" > "$out/compare.txt" 2>&1 <<'EOF' || fail "$label: $(cat "$out/compare.txt")"
 import sys
 
 def vertices(path):
@@ -67,9 +74,27 @@ if differing:
     sys.exit("%d of %d points differ from the union's" % (differing, union_count))
 print("%d points of %d tiles, %d properties: identical" % (count, len(sys.argv) - 2, len(union_properties)))
 EOF
+  echo "$label: $(cat "$out/compare.txt")"
+}
+
+predict_and_compare model.bin k20-optimal-height
+tiles_done=$(date +%s)
+
+# the pyramid (scales in metres, both weights, their heights): representatives and rows near each tile
+# checked to be the union's, the halo widened until they are
+"$tool" classify train "$labeled/ign_lidarhd_77050_627755.las" -o "$dir/pyramid.bin" --features pyramid,pyramid-sigmoid \
+  --trees 4 --depth 12 2> "$dir/train_pyramid.txt" || fail "train pyramid: $(cat "$dir/train_pyramid.txt")"
+grep -q '"pyramid":{"cell":0.5,"cell_sizes":\[0.5,1.0,2.0,4.0,8.0\],"k":10,"levels":5}' "$dir/pyramid.bin" \
+  || fail "the pyramid model does not store its cell sizes"
+# the tiles from a 10 m halo (too narrow: read again, wider), then one from the default first halo
+predict_and_compare pyramid.bin pyramid "--halo 10"
+grep -q ' readings, ' "$dir/pyramid/tiles/$first_tile.txt" || fail "a 10 m halo was enough for the pyramid"
+"$tool" classify predict "$dir/pyramid.bin" --catalog "$labeled" --tile "$first_tile" -o "$dir/pyramid_default.ply" \
+  2> "$dir/pyramid_default.txt" || fail "predict $first_tile (pyramid): $(cat "$dir/pyramid_default.txt")"
+cmp -s "$dir/pyramid_default.ply" "$dir/pyramid/tiles/$first_tile.ply" \
+  || fail "the pyramid's tile from the default halo differs from the one from 10 m"
 end=$(date +%s)
-cat "$dir/compare.txt"
-echo "train + 6 tiles: $((tiles_done - start)) s, union: $((end - tiles_done)) s"
+echo "train + 6 tiles + union: $((tiles_done - start)) s, the pyramid's: $((end - tiles_done)) s"
 
 # refusals with --tile: CGAL's generator (a model whose groups name cgal; refused before its forest is
 # read) and the graph-cut; nothing written

@@ -101,6 +101,7 @@ Input_points read_input_points(const Arguments& args, const std::string& command
   }
   in.source = catalog.tiles[tile].path;
   in.is_tile = true;
+  in.tile_extent = catalog.tiles[tile].extent;
   SN::Halo_options halo_options;
   halo_options.initial_width = halo;
   halo_options.minimum_width = minimum_halo;

@@ -52,6 +52,7 @@ struct Input_points
   std::string source;                // what was read, for the messages
   bool is_tile = false;
   SN::Tile_with_halo halo;           // when is_tile: everything but its points
+  CGAL::Bbox_2 tile_extent;          // when is_tile: the tile's extent in x and y, which the halo widens
   std::string tile_name;
   std::string catalog_fingerprint;   // the tiles, their order and their sizes
   std::size_t catalog_tiles = 0;

@@ -23,8 +23,10 @@ namespace classification {
 
 const char* const CLASSIFY_USAGE =
   "usage: sigmoid-neighborhoods classify train FILE... -o MODEL [--labels MAP] [--features GROUPS]\n"
-  "                                [--trees 25] [--depth 20] [--feature-order-seed N] [--max-per-class N]\n"
-  "                                [normals] [--threads N]\n"
+  "                                [--trees 25] [--depth 20] [--feature-order-seed N] [--max-per-class N]
+"
+  "                                [--pyramid-cell 0.5] [--pyramid-levels 5] [normals] [--threads N]
+"
   "       sigmoid-neighborhoods classify predict MODEL INPUT|--catalog SOURCE [--tile NAME] -o OUT.ply\n"
   "                                [--graphcut STRENGTH] [--threads N]\n"
   "       sigmoid-neighborhoods classify evaluate MODEL FILE... -o DIR [--graphcut STRENGTH] [--threads N]\n"
@@ -42,7 +44,8 @@ const char* const CLASSIFY_USAGE =
   "  predict writes a binary PLY: scalar_label (class index), scalar_confidence_<class>, red green blue\n"
   "  predict --catalog SOURCE: the union of the tiles in one run; with --tile NAME, the tile's points alone,\n"
   "      featured with a halo of the other tiles' points that holds the k nearest neighbors of the model's\n"
-  "      groups, the neighbors of their normals and, for the group height, every cell of the tile: their labels\n"
+  "      groups, the neighbors of their normals and, for the group height, every cell of the tile (for the\n"
+  "      pyramid groups, one checked to hold each level's representatives and rows near the tile): their labels\n"
   "      and confidences are those of the union, bit for bit (orientation mst excepted); refused with --tile:\n"
   "      the group cgal (CGAL's generator takes its scales from the average spacing and anchors its grids at\n"
   "      the bounding box of the whole point set) and --graphcut (a minimisation over the whole point set):\n"

@@ -11,6 +11,7 @@
 
 #include <CGAL/Real_timer.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <iostream>
@@ -71,9 +72,29 @@ int run_classify_predict(int argc, char** argv)
   CGAL::Real_timer timer;
   timer.start();
   progress("reading");
-  // the normals' neighbor rows kept for the features; a tile's halo holds them and the height cells
-  Input_points in = read_input_points(args, "classify predict", largest_neighborhood(settings.features),
-                                      settings.normals, cell_halo(settings.features), 1);
+  // the normals' neighbor rows kept for the features; a tile's halo holds them and the height cells,
+  // and is widened until the pyramid's representatives and rows near the tile are checked to be the union's
+  // --halo WIDTH: the pyramid's first halo too (the heights' cells still hold)
+  double minimum_halo = cell_halo(settings.features, !args.has("--halo"));
+  Input_points in;
+  unsigned int readings = 0;
+  for(;;)
+  {
+    in = read_input_points(args, "classify predict", largest_neighborhood(settings.features), settings.normals,
+                           minimum_halo, 1);
+    readings += in.halo.readings;
+    if(!in.is_tile)
+      break;
+    const double needed = pyramid_halo_width_of_tile(in.model, settings.features, in.tile_extent, in.first, in.last);
+    if(needed <= in.halo.halo_width)
+      break;
+    if(readings >= 16)
+      throw Usage_error(in.source + ": no halo up to " + number_fixed(in.halo.halo_width, 1) +
+                        " holds the pyramid's representatives and rows near tile " + in.tile_name);
+    progress("reading a wider halo for the pyramid");
+    minimum_halo = std::max(needed, 1.5 * in.halo.halo_width);
+  }
+  in.halo.readings = readings;
   if(in.is_tile && in.first == in.last)
     throw Usage_error(in.source + ": tile " + in.tile_name + " has no point of its own (empty, or all on an earlier "
                       "tile's seam): nothing to predict");

@@ -11,6 +11,7 @@
 #include "command_line.h"
 #include "model_input.h"
 
+#include <cmath>
 #include <cstddef>
 #include <iostream>
 #include <string>
@@ -27,6 +28,12 @@ Feature_options read_feature_options(const Arguments& args)
   Feature_options o;
   o.groups = parse_feature_groups(args.get("--features", "cgal"));
   o.threads = read_threads(args);
+  o.pyramid_cell = args.get_double("--pyramid-cell", o.pyramid_cell);
+  o.pyramid_levels = args.get_unsigned("--pyramid-levels", o.pyramid_levels);
+  if(!(o.pyramid_cell > 0.) || !std::isfinite(o.pyramid_cell))
+    throw Usage_error("--pyramid-cell must be a positive cell size in metres");
+  if(o.pyramid_levels < 1 || o.pyramid_levels > 32)
+    throw Usage_error("--pyramid-levels must be 1 to 32");
   return o;
 }
 
@@ -36,7 +43,8 @@ int run_classify_train(int argc, char** argv)
 {
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT + 1,
                        with_normal_options({"-o", "--output", "--labels", "--features", "--trees", "--depth",
-                                            "--feature-order-seed", "--max-per-class", "--threads"}),
+                                            "--feature-order-seed", "--max-per-class", "--threads", "--pyramid-cell",
+                                            "--pyramid-levels"}),
                        with_normal_flags({"-h", "--help"}), NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, CLASSIFY_USAGE))
   {

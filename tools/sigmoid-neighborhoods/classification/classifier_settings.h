@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -45,6 +46,12 @@ inline nlohmann::json settings_json(const Classifier_settings& s)
                    {"k_min", s.features.k_min},           {"k_max", s.features.k_max},
                    {"scales", s.features.scales},         {"sigmoid", {s.features.sigmoid_a, s.features.sigmoid_b}},
                    {"cell_sizes", s.features.cell_sizes}, {"cgal_scales", s.features.cgal_scales}};
+  // the pyramid's scales in metres, so that the model applies them at any density; cell_sizes is
+  // what cell and levels give, for the reader
+  j["features"]["pyramid"] = {{"cell", s.features.pyramid_cell},
+                              {"levels", s.features.pyramid_levels},
+                              {"k", s.features.pyramid_k},
+                              {"cell_sizes", s.features.pyramid_cell_sizes()}};
   j["normals"] = {{"source", s.normals.source == SN::Normal_source::JET ? "jet" : "pca"},
                   {"neighbors", s.normals.neighbors},
                   {"orientation", SN::normal_orientation_name(s.normals.orientation)},
@@ -93,6 +100,19 @@ inline Classifier_settings settings_from_json(const nlohmann::json& j, const std
     for(double c : s.features.cell_sizes)
       if(!(c > 0.) || !std::isfinite(c))
         throw bad("a cell size is not positive");
+    if(f.contains("pyramid")) // models written before the pyramid have none: the defaults, unused
+    {
+      const nlohmann::json& p = f.at("pyramid");
+      s.features.pyramid_cell = p.at("cell").get<double>();
+      s.features.pyramid_levels = p.at("levels").get<unsigned int>();
+      s.features.pyramid_k = p.at("k").get<unsigned int>();
+      if(!(s.features.pyramid_cell > 0.) || !std::isfinite(s.features.pyramid_cell) || s.features.pyramid_levels < 1 ||
+         s.features.pyramid_levels > 32 || s.features.pyramid_k < 1 || s.features.pyramid_k > largest_k ||
+         !std::isfinite(s.features.pyramid_cell_sizes().back()))
+        throw bad("pyramid settings out of range");
+      if(p.contains("cell_sizes") && p.at("cell_sizes").get<std::vector<double>>() != s.features.pyramid_cell_sizes())
+        throw bad("the pyramid's cell sizes are not its cell times 1, 2, 4 ...");
+    }
     const nlohmann::json& n = j.at("normals");
     s.normals.source = n.at("source").get<std::string>() == "jet" ? SN::Normal_source::JET : SN::Normal_source::PCA;
     s.normals.neighbors = n.at("neighbors").get<unsigned int>();

@@ -378,6 +378,14 @@ void write_evaluation(const std::string& dir, const Confusion& c, const Label_ma
   });
 }
 
+double pyramid_halo_width_of_tile(const SN::Oriented_point_set& model, const Feature_options& features,
+                                  const CGAL::Bbox_2& extent, std::size_t first, std::size_t last)
+{
+  if(!internal_classification::has_pyramid(features) || first == last)
+    return 0.;
+  return pyramid_halo_width(model, features, extent, first, last);
+}
+
 double read_graphcut(const Arguments& args)
 {
   const double strength = args.get_double("--graphcut", 0.);

@@ -15,6 +15,7 @@
 #include <CGAL/Sigmoid_neighborhoods/compute_height_features.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_k_nearest_neighbors.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_point_features.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_pyramid_features.h>
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 #include <CGAL/Sigmoid_neighborhoods/Classification/add_point_features.h>
 
@@ -24,6 +25,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -71,7 +74,98 @@ inline void append_cgal_features(const SN::Oriented_point_set& model, unsigned i
   }
 }
 
+inline void append_height_features(const SN::Oriented_point_set& model, double cell, const std::string& suffix,
+                                   std::vector<Feature_column>& columns)
+{
+  std::vector<SN::Height_features> heights;
+  heights.reserve(model.points.size());
+  SN::compute_height_features(model.points, cell, std::back_inserter(heights));
+  Feature_column above{"height_above_lowest" + suffix, {}}, below{"height_below_highest" + suffix, {}},
+    range_column{"vertical_range" + suffix, {}};
+  for(const SN::Height_features& h : heights)
+  {
+    above.values.push_back(h.height_above_lowest);
+    below.values.push_back(h.height_below_highest);
+    range_column.values.push_back(h.vertical_range);
+  }
+  columns.push_back(std::move(above));
+  columns.push_back(std::move(below));
+  columns.push_back(std::move(range_column));
+}
+
+// The suffix of a pyramid level's columns: its cell size, e.g. "_pyr0.5".
+inline std::string pyramid_suffix(double cell) { return "_pyr" + number17(cell); }
+
 } // namespace internal_classification
+
+// The pyramid of the groups pyramid and pyramid-sigmoid on `model`.
+inline std::vector<SN::Pyramid_level> build_model_pyramid(const SN::Oriented_point_set& model, const Feature_options& o)
+{
+  return SN::build_point_pyramid<SN::Parallel_if_available_tag>(
+    point_indices(model.points.size()), o.pyramid_cell_sizes(), o.pyramid_k,
+    SN::parameters::number_of_threads(o.threads, model_maps(model)));
+}
+
+// How wide a tile's halo must be for the pyramid's records of the tile's points `first` ... `last - 1`
+// (of extent `extent` in x and y) to be the union's, checked on `model`, the tile and a halo of the
+// union's points within `width` of the extent (read_tile_with_halo()): the result is at most `width`
+// when they are. A point's records are its nearest representative's and those of that one's k
+// neighbors among the representatives (and, where normals are estimated, the normals of these). Every
+// point of the union within xy-distance W + inside(x) of x is read, inside(x) the distance of x to the
+// extent's nearest side (negative outside). A representative read is the union's when its cell is
+// whole, i.e. every union point of its cell is read; a cell meeting the ball of radius d around x lies
+// within d + sqrt(2) c of x in xy. So for a point p, its nearest representative r at d and r's k-th
+// neighbor at d_k: when every cell meeting the ball of radius d around p and of radius d_k around r
+// is whole, the representatives in both balls are the union's (and no union representative in them
+// is missing), so r and its row are the union's (ties break on the global order, which the read set
+// keeps). A normal estimated on n neighbors is the union's when the ball of its n-th neighbor is read.
+inline double pyramid_halo_width(const SN::Oriented_point_set& model, const Feature_options& o,
+                                 const CGAL::Bbox_2& extent, std::size_t first, std::size_t last)
+{
+  using internal_classification::has_group;
+  const std::vector<SN::Pyramid_level> levels = build_model_pyramid(model, o);
+  const bool sigmoid = has_group(o, "pyramid-sigmoid");
+  const unsigned int normal_neighbors = model.normals_estimated ? model.estimation_neighbors : 0;
+  auto distance = [&](std::size_t i, std::size_t j) { return std::sqrt(CGAL::squared_distance(model.points[i], model.points[j])); };
+  // the halo point i needs to see every union point within `reach` of it
+  auto needed = [&](std::size_t i, double reach) {
+    const auto& p = model.points[i];
+    const double inside =
+      std::min({p.x() - extent.xmin(), extent.xmax() - p.x(), p.y() - extent.ymin(), extent.ymax() - p.y()});
+    return reach * (1. + 1e-9) + 1e-9 * (std::abs(p.x()) + std::abs(p.y())) - inside;
+  };
+  auto normal_reach = [&](std::size_t i) {
+    if(normal_neighbors == 0)
+      return 0.;
+    const std::size_t row = model.neighbor_offsets[i + 1] - model.neighbor_offsets[i];
+    if(row < normal_neighbors)
+      return std::numeric_limits<double>::infinity();
+    return distance(i, model.neighbor_indices[model.neighbor_offsets[i] + normal_neighbors - 1]);
+  };
+  double width = 0.;
+  for(const SN::Pyramid_level& level : levels)
+  {
+    const double cell = std::sqrt(2.) * level.thinning.cell_size;
+    const auto& representatives = level.thinning.representatives;
+    std::vector<char> seen(representatives.size(), 0);
+    for(std::size_t i = first; i < last; ++i)
+    {
+      const std::uint32_t r = level.thinning.nearest_representative[i];
+      width = std::max(width, needed(i, distance(i, representatives[r]) + cell));
+      if(seen[r])
+        continue;
+      seen[r] = 1;
+      const std::size_t begin = level.neighbor_offsets[r], end = level.neighbor_offsets[r + 1];
+      const double d_k = distance(representatives[r], representatives[level.neighbor_indices[end - 1]]);
+      width = std::max(width, needed(representatives[r], std::max(d_k + cell, normal_reach(representatives[r]))));
+      if(sigmoid) // the weights read the neighbors' normals
+        for(std::size_t e = begin; e < end; ++e)
+          width = std::max(width, needed(representatives[level.neighbor_indices[e]],
+                                         normal_reach(representatives[level.neighbor_indices[e]])));
+    }
+  }
+  return width;
+}
 
 // The columns of every group of `o` on `model` (positions and oriented normals), in the order of
 // `o.groups`. The package's groups share one k-nearest-neighbor structure: the model's own rows when
@@ -112,6 +206,8 @@ std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set
     o.threads, SNP::neighbor_indices(std::cref(model_rows ? model.neighbor_indices : indices),
                                      SNP::neighbor_offsets(std::cref(model_rows ? model.neighbor_offsets : offsets), maps)));
   const std::vector<double> pi{CGAL_PI};
+
+  std::vector<SN::Pyramid_level> pyramid; // built once for both pyramid groups
 
   std::vector<Feature_column> columns;
   for(const std::string& group : o.groups)
@@ -154,23 +250,35 @@ std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set
     else if(group == "height")
     {
       for(double cell : o.cell_sizes)
+        internal_classification::append_height_features(model, cell, "_cell" + number17(cell), columns);
+    }
+    else if(group == "pyramid" || group == "pyramid-sigmoid")
+    {
+      const bool sigmoid = group == "pyramid-sigmoid";
+      if(pyramid.empty())
+        pyramid = build_model_pyramid(model, o);
+      const SN::Cosine_sigmoid weights = sigmoid ? SN::Cosine_sigmoid(o.sigmoid_a, o.sigmoid_b)
+                                                 : SN::Cosine_sigmoid(CGAL_PI, CGAL_PI);
+      std::vector<std::vector<SN::Point_features>> per_point;
+      per_point.reserve(model.points.size());
+      SN::compute_pyramid_features<SN::Parallel_if_available_tag>(range, pyramid, o.pyramid_k, weights,
+                                                                  std::back_inserter(per_point),
+                                                                  SNP::number_of_threads(o.threads, maps));
+      const std::vector<double> cells = o.pyramid_cell_sizes();
+      for(std::size_t l = 0; l < cells.size(); ++l)
       {
-        std::vector<SN::Height_features> heights;
-        heights.reserve(model.points.size());
-        SN::compute_height_features(model.points, cell, std::back_inserter(heights));
-        const std::string suffix = "_cell" + number17(cell);
-        Feature_column above{"height_above_lowest" + suffix, {}}, below{"height_below_highest" + suffix, {}},
-          range_column{"vertical_range" + suffix, {}};
-        for(const SN::Height_features& h : heights)
-        {
-          above.values.push_back(h.height_above_lowest);
-          below.values.push_back(h.height_below_highest);
-          range_column.values.push_back(h.vertical_range);
-        }
-        columns.push_back(std::move(above));
-        columns.push_back(std::move(below));
-        columns.push_back(std::move(range_column));
+        std::vector<SN::Point_features> at_level;
+        at_level.reserve(per_point.size());
+        for(const auto& p : per_point)
+          at_level.push_back(p[l]);
+        append_point_features(at_level, shape,
+                              (sigmoid ? "_sigmoid" : "") + internal_classification::pyramid_suffix(cells[l]), columns);
       }
+      // the heights in the levels' cells, once when both groups are given
+      if(!sigmoid || !has_group(o, "pyramid"))
+        for(double cell : cells)
+          internal_classification::append_height_features(model, cell, internal_classification::pyramid_suffix(cell),
+                                                          columns);
     }
   }
   return columns;

@@ -13,6 +13,7 @@
 #include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,22 @@ struct Feature_options
   double sigmoid_a = CGAL_PI / 6., sigmoid_b = CGAL_PI / 3.; // multiscale-sigmoid's weights
   std::vector<double> cell_sizes{2.5, 5., 10.};        // group height
   unsigned int cgal_scales = 5;                        // group cgal
+  // groups pyramid and pyramid-sigmoid: cells of pyramid_cell * 2^l metres, l < pyramid_levels. A base
+  // of 0.5 m is coarser than the spacing of airborne surveys of 4 points/m^2 and more (IGN LiDAR HD:
+  // 10 or more, about 0.3 m), so that every level thins and its features do not depend on the density;
+  // 8 m at the top: k = 10 representatives then span about 30 m, a building and its surroundings.
+  double pyramid_cell = 0.5;
+  unsigned int pyramid_levels = 5;
+  unsigned int pyramid_k = 10; // neighbors per level, among the level's representatives (Hackel et al. 2016)
   unsigned int threads = 0;
+
+  std::vector<double> pyramid_cell_sizes() const
+  {
+    std::vector<double> sizes;
+    for(unsigned int l = 0; l < pyramid_levels; ++l)
+      sizes.push_back(std::ldexp(pyramid_cell, int(l)));
+    return sizes;
+  }
 };
 
 inline const char* FEATURE_GROUPS_USAGE =
@@ -54,7 +70,8 @@ inline const char* FEATURE_GROUPS_USAGE =
 inline const std::vector<std::string>& known_feature_groups()
 {
   static const std::vector<std::string> groups{"cgal",     "k20",        "eigenentropy",       "dimensionality",
-                                               "optimal", "multiscale", "multiscale-sigmoid", "height"};
+                                               "optimal", "multiscale", "multiscale-sigmoid", "height",
+                                               "pyramid", "pyramid-sigmoid"};
   return groups;
 }
 
@@ -67,7 +84,7 @@ inline std::vector<std::string> parse_feature_groups(const std::string& text)
     if(std::find(known.begin(), known.end(), group) == known.end())
       throw Usage_error("--features: unknown group '" + group +
                         "': expected cgal, k20, eigenentropy, dimensionality, optimal, multiscale, "
-                        "multiscale-sigmoid or height");
+                        "multiscale-sigmoid, height, pyramid or pyramid-sigmoid");
     if(std::find(groups.begin(), groups.end(), group) != groups.end())
       throw Usage_error("--features: group '" + group + "' given twice");
     groups.push_back(group);
@@ -81,6 +98,8 @@ inline bool has_group(const Feature_options& o, const char* group)
 {
   return std::find(o.groups.begin(), o.groups.end(), group) != o.groups.end();
 }
+
+inline bool has_pyramid(const Feature_options& o) { return has_group(o, "pyramid") || has_group(o, "pyramid-sigmoid"); }
 
 } // namespace internal_classification
 
@@ -98,14 +117,25 @@ inline unsigned int largest_neighborhood(const Feature_options& o)
   return k;
 }
 
-// The halo the group height needs around a tile (0: none): a cell meeting the tile lies within its
-// side of the tile, so a halo that wide holds every point of the tile's cells. The relative margin
-// covers the rounding of x / side at the cells' borders while |x| / side stays below 10^9.
-inline double cell_halo(const Feature_options& o)
+// The halo the groups height and pyramid need around a tile (0: none). Height: a cell meeting the
+// tile lies within its side of the tile, so a halo that wide holds every point of the tile's cells.
+// The relative margin covers the rounding of x / side at the cells' borders while |x| / side stays
+// below 10^9. Pyramid: a first guess only, 4 coarsest cells (a point's nearest representative within
+// a cell's diagonal, 1.7 cells, the k = 10 nearest of that one within about 2 cells on a surface, and
+// their cells; the six IGN tiles need 3.4 to 3.9); pyramid_halo_width() (feature_groups.h) checks it
+// on what was read, and the tile is read again with a wider halo when it does not hold.
+// `pyramid_guess` false: what the cells need alone (the caller gives the pyramid's first halo).
+inline double cell_halo(const Feature_options& o, bool pyramid_guess = true)
 {
-  if(!internal_classification::has_group(o, "height"))
-    return 0.;
-  return *std::max_element(o.cell_sizes.begin(), o.cell_sizes.end()) * (1. + 1e-6);
+  using internal_classification::has_group;
+  double halo = 0.;
+  if(has_group(o, "height"))
+    halo = *std::max_element(o.cell_sizes.begin(), o.cell_sizes.end()) * (1. + 1e-6);
+  if(internal_classification::has_pyramid(o))
+    halo = std::max(halo, o.pyramid_cell_sizes().back() * (1. + 1e-6)); // the heights in its cells
+  if(pyramid_guess && internal_classification::has_pyramid(o))
+    halo = std::max(halo, 4. * o.pyramid_cell_sizes().back());
+  return halo;
 }
 
 // The groups of `o` that depend on the whole point set (the cgal group: CGAL's generator takes its
