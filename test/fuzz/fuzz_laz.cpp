@@ -7,7 +7,8 @@
 // by read_las_header() and for_each_las_record_block() on one and on two threads. Expected outcomes:
 // the records, or an Input_error (the command's exit code 2). Findings: a crash, a sanitizer
 // report, a hang, an allocation over -malloc_limit_mb, any other exception, and records or an error
-// message that differ between one and two threads. Seeds: the LAZ files of ../shared/data/laz (`make fuzz-laz`).
+// message that differ between one and two threads. Seeds: the LAZ files of ../shared/data/laz
+// (`make fuzz-laz`).
 //
 // Built with SIGMOID_NEIGHBORHOODS_LIBFUZZER (clang, -fsanitize=fuzzer) this is the fuzzer;
 // without it, a `main` replays the files given on the command line.

@@ -43,7 +43,8 @@ namespace {
 const char* const DEFAULT_EXPERIMENT_SETS =
   "A=cgal;B=k20,height;C=eigenentropy,height;D=dimensionality,height;E=optimal,height;F=multiscale,height;"
   "F_sigmoid=multiscale-sigmoid,height;G_optimal=cgal,optimal;G_multiscale=cgal,multiscale;"
-  "G_multiscale_sigmoid=cgal,multiscale-sigmoid";
+  "G_multiscale_sigmoid=cgal,multiscale-sigmoid;P=pyramid;P_sigmoid=pyramid-sigmoid;H_pyramid=cgal,pyramid;"
+  "H_pyramid_sigmoid=cgal,pyramid-sigmoid";
 
 struct Feature_set_spec
 {

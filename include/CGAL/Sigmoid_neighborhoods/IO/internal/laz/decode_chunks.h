@@ -75,6 +75,7 @@ void for_each_decoded_chunk(std::istream& in, const Layout& layout, std::size_t 
   std::vector<unsigned char> coded;
   std::vector<std::vector<unsigned char>> records(batch);
   std::optional<Chunk_decoder> single;
+  std::vector<std::string> errors;
   for(std::size_t first = 0; first < chunks; first += batch)
   {
     const std::size_t n = (std::min)(batch, chunks - first);
@@ -94,14 +95,20 @@ void for_each_decoded_chunk(std::istream& in, const Layout& layout, std::size_t 
       }
       catch(const Decode_error& e)
       {
-        throw Input_error(laz_error("chunk " + std::to_string(c) + " of " + std::to_string(chunks) + ", bytes " +
-                                    std::to_string(begin) + " to " + std::to_string(end) + ": " + e.what()));
+        // kept, not thrown: a parallel loop skips the indices it has not begun once one throws, so
+        // the first damaged chunk of a batch is reported whatever the threads do
+        errors[i] = "chunk " + std::to_string(c) + " of " + std::to_string(chunks) + ", bytes " +
+                    std::to_string(begin) + " to " + std::to_string(end) + ": " + e.what();
       }
     };
+    errors.assign(n, std::string());
     if(n == 1) // the last chunk, or a file of one: no threads to wake
       decode(0, single ? *single : single.emplace(layout));
     else
       for_each_index<ConcurrencyTag>(n, threads, [&] { return Chunk_decoder(layout); }, decode, 1);
+    for(const std::string& error : errors)
+      if(!error.empty())
+        throw Input_error(laz_error(error));
     for(std::size_t i = 0; i < n; ++i)
       sink(std::size_t(layout.chunk_firsts[first + i]), records[i].data(),
            std::size_t(layout.chunk_firsts[first + i + 1] - layout.chunk_firsts[first + i]));
