@@ -26,7 +26,7 @@ namespace {
 Feature_options read_feature_options(const Arguments& args)
 {
   Feature_options o;
-  o.groups = parse_feature_groups(args.get("--features", "cgal"));
+  o.groups = parse_feature_groups(args.get("--features", DEFAULT_FEATURE_GROUPS));
   o.threads = read_threads(args);
   o.pyramid_cell = args.get_double("--pyramid-cell", o.pyramid_cell);
   o.pyramid_levels = args.get_unsigned("--pyramid-levels", o.pyramid_levels);
