@@ -58,8 +58,11 @@ inline void append_cgal_features(const SN::Oriented_point_set& model, unsigned i
   points.reserve(model.points.size());
   for(const auto& p : model.points)
     points.insert(p);
-  CGAL::Classification::Point_set_feature_generator<Kernel, Point_set, Point_set::Point_map> generator(
-    points, points.point_map(), scales);
+  // Sequential: on TBB, the generator's neighborhoods and eigen analysis give features that differ in
+  // their last bits from run to run (so would the forests trained on them); the features themselves
+  // are then computed side by side, each on its own.
+  CGAL::Classification::Point_set_feature_generator<Kernel, Point_set, Point_set::Point_map, CGAL::Sequential_tag>
+    generator(points, points.point_map(), scales);
   CGAL::Classification::Feature_set features;
   features.begin_parallel_additions();
   generator.generate_point_based_features(features);
