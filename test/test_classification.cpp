@@ -29,15 +29,6 @@ namespace SNP = CGAL::Sigmoid_neighborhoods::parameters;
 
 namespace {
 
-typedef std::pair<Point_3, Vector_3> Point_with_normal;
-typedef std::vector<Point_with_normal> Point_list;
-typedef CGAL::First_of_pair_property_map<Point_with_normal> Point_map;
-typedef CGAL::Second_of_pair_property_map<Point_with_normal> Normal_map;
-
-auto maps() { return CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()); }
-
-bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }
-
 // An n x n grid of spacing 1 in the plane spanned by u and v, normals `normal`.
 Point_list grid(int n, const Vector_3& u, const Vector_3& v, const Vector_3& normal)
 {

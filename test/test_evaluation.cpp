@@ -37,7 +37,6 @@
 
 namespace SN = CGAL::Sigmoid_neighborhoods;
 namespace fs = std::filesystem;
-typedef std::pair<Point_3, Vector_3> Point_with_normal;
 
 namespace {
 

@@ -11,6 +11,8 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/read_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "test_scratch.h"
+
 #include <catch2/catch.hpp>
 
 #include <sys/resource.h>
@@ -55,25 +57,10 @@ constexpr bool ADDRESS_SANITIZER = false;
 constexpr std::size_t MEMORY_LIMIT_BYTES = std::size_t(256) << 20;
 constexpr unsigned int CPU_LIMIT_SECONDS = 5;
 
+// This file's folder of the run's scratch folder.
 const std::string& scratch()
 {
-  struct Scratch
-  {
-    std::string root;
-    ~Scratch()
-    {
-      std::error_code ec;
-      std::filesystem::remove_all(root, ec);
-    }
-  };
-  static Scratch scratch;
-  static const std::string dir = [] {
-    char name[] = "/tmp/sn_limits_XXXXXX";
-    const char* made = ::mkdtemp(name);
-    REQUIRE(made != nullptr);
-    scratch.root = made;
-    return std::string(made);
-  }();
+  static const std::string dir = scratch_folder("limits");
   return dir;
 }
 

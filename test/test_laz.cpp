@@ -11,9 +11,10 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_las.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 
+#include "test_scratch.h"
+
 #include <catch2/catch.hpp>
 
-#include <unistd.h>
 
 #include <cstdint>
 #include <cstdio>
@@ -39,26 +40,10 @@ bool have_laz_data()
   return false;
 }
 
-// A folder of this run's files, removed at exit.
+// This file's folder of the run's scratch folder.
 const std::string& laz_scratch()
 {
-  struct Scratch
-  {
-    std::string root;
-    ~Scratch()
-    {
-      std::error_code ec;
-      std::filesystem::remove_all(root, ec);
-    }
-  };
-  static Scratch scratch;
-  static const std::string dir = [] {
-    char name[] = "/tmp/sn_laz_XXXXXX";
-    const char* made = ::mkdtemp(name);
-    REQUIRE(made != nullptr);
-    scratch.root = made;
-    return std::string(made);
-  }();
+  static const std::string dir = scratch_folder("laz");
   return dir;
 }
 

@@ -10,14 +10,29 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
+#include <CGAL/property_map.h>
+
 #include <array>
+#include <cstring>
 #include <map>
+#include <utility>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point_3;
 typedef Kernel::Vector_3 Vector_3;
 typedef CGAL::Surface_mesh<Point_3> Mesh;
+
+// Oriented points as (point, normal) pairs, with their property maps.
+typedef std::pair<Point_3, Vector_3> Point_with_normal;
+typedef std::vector<Point_with_normal> Point_list;
+typedef CGAL::First_of_pair_property_map<Point_with_normal> Point_map;
+typedef CGAL::Second_of_pair_property_map<Point_with_normal> Normal_map;
+
+inline auto maps() { return CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()); }
+
+// Equal to the last bit (and 0 and -0 told apart): what "bit for bit" tests compare.
+inline bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }
 
 // The surface of [0, n]^3 (scaled by `scale`), each face an n x n grid of squares cut in two
 // triangles, oriented outwards: flat faces, sharp edges and corners.

@@ -36,15 +36,8 @@ namespace SN = CGAL::Sigmoid_neighborhoods;
 namespace SNP = CGAL::Sigmoid_neighborhoods::parameters;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-typedef std::pair<Point_3, Vector_3> Point_with_normal;
-typedef std::vector<Point_with_normal> Point_list;
-typedef CGAL::First_of_pair_property_map<Point_with_normal> Point_map;
-typedef CGAL::Second_of_pair_property_map<Point_with_normal> Normal_map;
-
 static const double pi = CGAL_PI;
 static const double inf = std::numeric_limits<double>::infinity();
-
-static auto maps() { return CGAL::parameters::point_map(Point_map()).normal_map(Normal_map()); }
 
 static Point_list mesh_point_list(const Mesh& mesh)
 {
@@ -146,8 +139,6 @@ plain_optimal(const Point_list& points, std::size_t i, SN::Barycenter bary,
     }
   return best;
 }
-
-static bool same_bits(double x, double y) { return std::memcmp(&x, &y, sizeof(double)) == 0; }
 
 static bool same_record(const SN::Optimal_sigmoid_neighborhood& r, const SN::Optimal_sigmoid_neighborhood& s)
 {
