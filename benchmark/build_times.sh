@@ -97,7 +97,8 @@ ex="$work/cgal-examples"; mkdir -p "$ex"
 tar -xzf /usr/share/doc/libcgal-dev/examples.tar.gz -C "$ex" examples/Point_set_processing_3/normals_example.cpp \
   examples/Classification/example_ethz_random_forest.cpp
 flags="-DBOOST_ALL_NO_LIB -DCGAL_EIGEN3_ENABLED -DCGAL_USE_GMPXX=1 -I$clone/include -isystem /usr/include/eigen3 -O3 -DNDEBUG -frounding-math -fopenmp -std=gnu++17"
-measure() { /usr/bin/time -f "%e %M" -o "$work/tu.txt" g++ $flags -c "$1" -o /dev/null; cat "$work/tu.txt"; }
+# $2: the example's own macros (those its CMake target gives it: CGAL::Sigmoid_neighborhoods_core's)
+measure() { /usr/bin/time -f "%e %M" -o "$work/tu.txt" g++ $flags ${2:-} -c "$1" -o /dev/null; cat "$work/tu.txt"; }
 {
   echo
   echo "A CGAL user's translation unit beside CGAL 5.5's comparable example, one after the other, the same flags (\`$flags\`, \`-c\`):"
@@ -106,11 +107,15 @@ measure() { /usr/bin/time -f "%e %M" -o "$work/tu.txt" g++ $flags -c "$1" -o /de
   echo "|---|---:|---:|---|---:|---:|---:|---:|"
 } >> "$table"
 pair() {
-  read -r t1 m1 < <(measure "$clone/examples/$1")
+  read -r t1 m1 < <(measure "$clone/examples/$1" "${3:-}")
   read -r t2 m2 < <(measure "$ex/examples/$2")
-  echo "| examples/$1 | $t1 | $((m1 / 1024)) | $2 | $t2 | $((m2 / 1024)) |" \
+  echo "| examples/$1${3:+ ($3)} | $t1 | $((m1 / 1024)) | $2 | $t2 | $((m2 / 1024)) |" \
        "$(echo "$t1 $t2" | awk '{printf "%.2f", $1 / $2}') | $(echo "$m1 $m2" | awk '{printf "%.2f", $1 / $2}') |" | tee -a "$table"
 }
+# as CMake builds them (linking the kernels compiled once), then header-only
+core=-DCGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE
+pair optimal_point_set_example.cpp Point_set_processing_3/normals_example.cpp "$core"
+pair classification_example.cpp Classification/example_ethz_random_forest.cpp "$core"
 pair optimal_point_set_example.cpp Point_set_processing_3/normals_example.cpp
 pair classification_example.cpp Classification/example_ethz_random_forest.cpp
 

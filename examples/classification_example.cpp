@@ -12,7 +12,7 @@
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO.h>
 
-#include <CGAL/Sigmoid_neighborhoods/Point_set_3.h>
+#include <CGAL/Sigmoid_neighborhoods/Point_set_3/estimate_and_orient_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_point_features.h>
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 #include <CGAL/Sigmoid_neighborhoods/Classification/add_point_features.h>

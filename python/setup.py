@@ -24,11 +24,12 @@ ParallelCompile("NPY_NUM_BUILD_JOBS").install()
 
 core = Pybind11Extension(
     "sigmoid_neighborhoods._core",
-    # the readers, compiled once (CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO), first: the longest unit
-    # starts while the module's compile beside it
-    ["../src/Sigmoid_neighborhoods/IO.cpp"] + sorted(str(p.relative_to(HERE)) for p in (HERE / "src").glob("*.cpp")),
+    # the readers and the kernels, compiled once (CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO and _CORE),
+    # first: the longest units start while the module's compile beside them
+    ["../src/Sigmoid_neighborhoods/IO.cpp", "../src/Sigmoid_neighborhoods/core.cpp"] + sorted(str(p.relative_to(HERE)) for p in (HERE / "src").glob("*.cpp")),
     include_dirs=[str(REPOSITORY / "include"), "/usr/include/eigen3"],
-    define_macros=[("NDEBUG", None), ("CGAL_EIGEN3_ENABLED", None), ("CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO", None), ("SIGMOID_NEIGHBORHOODS_VERSION", f'"{VERSION}"')],
+    define_macros=[("NDEBUG", None), ("CGAL_EIGEN3_ENABLED", None), ("CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO", None),
+                   ("CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE", None), ("SIGMOID_NEIGHBORHOODS_VERSION", f'"{VERSION}"')],
     # the flags of the CMake build (Release): the same code as the C++ library's tests check
     # -frounding-math: CGAL's interval arithmetic (the exact predicates of the readers) needs it, as CGAL's CMake sets
     extra_compile_args=["-O3", "-g0", "-fopenmp", "-frounding-math"],

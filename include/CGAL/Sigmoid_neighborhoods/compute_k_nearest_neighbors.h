@@ -7,7 +7,7 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_COMPUTE_K_NEAREST_NEIGHBORS_H
 
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Oriented_points.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
@@ -20,6 +20,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -60,20 +61,11 @@ void compute_k_nearest_neighbors(const PointRange& points, unsigned int k, std::
     internal::checked_points(points, NP_helper::get_const_point_map(points, np));
   if(copy.size() > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
     throw std::invalid_argument("compute_k_nearest_neighbors(): more than 2^32 - 1 points");
-  const std::size_t n = copy.size();
-  const std::size_t row = n == 0 ? 0 : (std::min)(std::size_t(k), n - 1);
-  indices.assign(n * row, 0);
-  offsets.resize(n + 1);
-  for(std::size_t i = 0; i <= n; ++i)
-    offsets[i] = i * row;
   const internal::Neighbor_query query(copy);
-  internal::for_each_index<ConcurrencyTag>(
-    n, internal::number_of_threads(np), [] { return std::vector<internal::Neighbor>(); },
-    [&](std::size_t i, std::vector<internal::Neighbor>& found) {
-      query.query(static_cast<std::uint32_t>(i), k, found);
-      for(std::size_t j = 0; j < row; ++j)
-        indices[i * row + j] = found[j].index;
-    });
+  internal::Neighbor_lists rows =
+    internal::nearest_neighbor_rows(query, k, internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np)));
+  indices = std::move(rows.indices);
+  offsets = std::move(rows.offsets);
 }
 
 } // namespace Sigmoid_neighborhoods

@@ -8,7 +8,8 @@
 
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/Optimal_sigmoid_neighborhood.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/Optimal_search.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/optimal_search_all.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/mesh_points.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>

@@ -11,7 +11,8 @@
 #include <CGAL/Sigmoid_neighborhoods/Optimal_sigmoid_neighborhood.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Local_neighborhood.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/Optimal_search.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/optimal_search_all.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/point_features_of.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Oriented_points.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
 
@@ -31,24 +32,6 @@ namespace Sigmoid_neighborhoods {
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
-
-// The features of N_i(k) with the weights w (of `sigmoid`) on `local`, the neighborhood of point i;
-// `known`, when given, holds its dimensionality features already (the search's record at its optimum).
-inline Point_features point_features_of(const Local_neighborhood& local, const double* w, unsigned int k,
-                                        Barycenter barycenter, const Cosine_sigmoid& sigmoid, double normal_z,
-                                        const Dimensionality_features* known = nullptr)
-{
-  const Weighted_covariance covariance = local.covariance(w, k, barycenter);
-  Point_features f;
-  f.dimensionality = known != nullptr ? *known : dimensionality_features(covariance);
-  complete_point_features(covariance, f);
-  f.normal_z = normal_z;
-  f.k = k;
-  f.a = sigmoid.a();
-  f.b = sigmoid.b();
-  f.radius = std::sqrt(local.squared_radius(k));
-  return f;
-}
 
 inline std::vector<unsigned int> checked_sizes(std::vector<unsigned int> sizes)
 {
@@ -206,37 +189,11 @@ compute_optimal_point_features(const PointRange& points, RecordOutputIterator re
   internal::check_enough_points(input.size(), settings.k_max);
   const internal::Neighbor_query query = internal::neighbor_query(input.points, np);
   internal::check_neighborhood_size(query, settings.k_max);
-  const internal::Optimal_search search(settings);
-  struct Scratch
-  {
-    internal::Optimal_search::Scratch search;
-    std::vector<double> weights;
-  };
-  typedef std::pair<Optimal_sigmoid_neighborhood, Point_features> Result;
-  internal::for_each_neighborhood<ConcurrencyTag, Result>(
-    input, query, settings.k_max, settings.threads, [&search] { return Scratch{search.make_scratch(), {}}; },
-    [&](std::size_t i, const internal::Local_neighborhood& local, Scratch& s) {
-      Result result;
-      result.first = search(local, s.search);
-      const Optimal_sigmoid_neighborhood& record = result.first;
-      if(record.is_failure())
-      {
-        result.second.normal_z = input.normals[i].z();
-        return result;
-      }
-      const Cosine_sigmoid sigmoid(record.a, record.b, settings.angle_tolerance);
-      s.weights.resize(local.size());
-      local.weights(sigmoid, s.weights.data());
-      // the search's own features at its optimum: the same covariance, no second eigenvalue solve
-      result.second = internal::point_features_of(local, s.weights.data(), record.k, settings.barycenter, sigmoid,
-                                                   input.normals[i].z(), &record.features);
-      return result;
-    },
-    [&](std::size_t, const Result& r) {
-      *records++ = r.first;
-      *features++ = r.second;
-    },
-    search.needs_angles());
+  internal::optimal_point_features_all<ConcurrencyTag>(
+    input, query, settings, [&](std::size_t, const Optimal_sigmoid_neighborhood& record, const Point_features& f) {
+      *records++ = record;
+      *features++ = f;
+    });
   return {records, features};
 }
 

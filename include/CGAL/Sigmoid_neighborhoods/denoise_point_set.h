@@ -10,7 +10,7 @@
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/Optimal_search.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/optimal_search_all.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Oriented_points.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Vertex_update.h>

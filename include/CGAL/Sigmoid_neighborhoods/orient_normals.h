@@ -17,7 +17,6 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
 
-#include <boost/graph/detail/d_ary_heap.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <Eigen/Core>
@@ -26,7 +25,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -37,120 +35,14 @@ namespace Sigmoid_neighborhoods {
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
-// The k nearest other points of every point in rows of min(k, n - 1), from the kd-tree in the
-// package's parallel loop: what a tree query gives the spanning forest's sequential walk.
-template <typename ConcurrencyTag>
-Neighbor_lists nearest_neighbor_rows(const Neighbor_query& query, unsigned int k, unsigned int threads)
-{
-  const std::size_t n = query.size();
-  const std::size_t row = n == 0 ? 0 : (std::min)(std::size_t(k), n - 1);
-  Neighbor_lists rows;
-  rows.indices.resize(n * row);
-  rows.offsets.resize(n + 1);
-  for(std::size_t i = 0; i <= n; ++i)
-    rows.offsets[i] = i * row;
-  for_each_index<ConcurrencyTag>(
-    n, threads, [] { return std::vector<Neighbor>(); },
-    [&](std::size_t i, std::vector<Neighbor>& found) {
-      query.query(static_cast<std::uint32_t>(i), k, found);
-      for(std::size_t j = 0; j < row; ++j)
-        rows.indices[i * row + j] = found[j].index;
-    });
-  return rows;
-}
-
-// Hoppe et al.'s graph is undirected (edge i-j when either point is among the k nearest of the
-// other): the rows give the edges out of a point, and these reversed rows the edges into it.
-inline Neighbor_lists reversed_neighbor_rows(const Neighbor_query& query, unsigned int k)
-{
-  const std::size_t n = query.size();
-  Neighbor_lists reversed;
-  reversed.offsets.assign(n + 1, 0);
-  std::vector<Neighbor> found;
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    query.query(static_cast<std::uint32_t>(i), k, found);
-    for(const Neighbor& x : found)
-      ++reversed.offsets[std::size_t(x.index) + 1];
-  }
-  std::partial_sum(reversed.offsets.begin(), reversed.offsets.end(), reversed.offsets.begin());
-  reversed.indices.resize(reversed.offsets[n]);
-  std::vector<std::size_t> next(reversed.offsets.begin(), reversed.offsets.end() - 1);
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    query.query(static_cast<std::uint32_t>(i), k, found);
-    for(const Neighbor& x : found)
-      reversed.indices[next[x.index]++] = static_cast<std::uint32_t>(i);
-  }
-  return reversed;
-}
-
-// The points by decreasing height, ties by index: the seeds of the components in turn, the first
-// point of each the highest (the first of the highest, as CGAL's mst_orient_normals() takes it).
-inline std::vector<std::uint32_t> points_from_the_top(const std::vector<Double_point>& points)
-{
-  std::vector<std::uint32_t> order(points.size());
-  std::iota(order.begin(), order.end(), std::uint32_t(0));
-  std::sort(order.begin(), order.end(), [&points](std::uint32_t i, std::uint32_t j) {
-    return points[i].z() > points[j].z() || (points[i].z() == points[j].z() && i < j);
-  });
-  return order;
-}
-
 // Prim's algorithm on Hoppe's graph with its weights 1 - |n_i . n_j|, from the highest point not yet
 // reached as long as one is left: a minimum spanning forest, each tree seeded with its highest point
 // turned towards +z. A point's normal is turned to agree with its parent's when the point leaves the
-// heap, as CGAL's breadth-first walk of the tree turns it. Returns the number of trees.
-inline std::size_t orient_along_spanning_forest(const std::vector<Double_point>& points, const Neighbor_query& query,
-                                                unsigned int k, std::vector<Eigen::Vector3d>& normals)
-{
-  const std::size_t n = points.size();
-  const Neighbor_lists reversed = reversed_neighbor_rows(query, k);
-  constexpr std::uint32_t NO_PARENT = std::uint32_t(-1);
-  std::vector<double> key(n, 2.); // above every weight
-  std::vector<std::uint32_t> parent(n, NO_PARENT);
-  std::vector<std::size_t> index_in_heap(n, std::size_t(-1));
-  std::vector<bool> done(n, false);
-  typedef boost::d_ary_heap_indirect<std::uint32_t, 4, std::size_t*, double*, std::less<double>> Heap;
-  Heap heap(key.data(), index_in_heap.data());
-  std::vector<Neighbor> found;
-
-  std::size_t trees = 0;
-  for(std::uint32_t seed : points_from_the_top(points))
-  {
-    if(done[seed])
-      continue;
-    ++trees;
-    key[seed] = 0.;
-    heap.push(seed);
-    while(!heap.empty())
-    {
-      const std::uint32_t u = heap.top();
-      heap.pop();
-      done[u] = true;
-      Eigen::Vector3d& nu = normals[u];
-      if(parent[u] == NO_PARENT ? nu.z() < 0. : nu.dot(normals[parent[u]]) < 0.)
-        nu = -nu;
-      auto relax = [&](std::uint32_t v) {
-        if(done[v])
-          return;
-        const double weight = (std::max)(0., 1. - std::abs(nu.dot(normals[v])));
-        if(weight < key[v])
-        {
-          key[v] = weight;
-          parent[v] = u;
-          heap.push_or_update(v);
-        }
-      };
-      query.query(u, k, found);
-      for(const Neighbor& x : found)
-        relax(x.index);
-      for(const std::uint32_t* v = reversed.begin(u); v != reversed.end(u); ++v)
-        relax(*v);
-    }
-  }
-  return trees;
-}
+// heap, as CGAL's breadth-first walk of the tree turns it. Returns the number of trees. A kernel
+// (config.h), in orient_normals_impl.h.
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION std::size_t orient_along_spanning_forest(const std::vector<Double_point>& points,
+                                                                            const Neighbor_query& query, unsigned int k,
+                                                                            std::vector<Eigen::Vector3d>& normals);
 
 template <typename PointRange, typename NamedParameters>
 Oriented_points checked_oriented_points(const PointRange& points, const NamedParameters& np)
@@ -211,7 +103,7 @@ std::size_t orient_normals_by_spanning_forest(PointRange& points, unsigned int k
     else
     {
       // the walk reads the rows of every point twice and sequentially: computed once, in parallel
-      const internal::Neighbor_lists rows = internal::nearest_neighbor_rows<ConcurrencyTag>(query, k, threads);
+      const internal::Neighbor_lists rows = internal::nearest_neighbor_rows(query, k, internal::kernel_threads<ConcurrencyTag>(threads));
       const internal::Neighbor_query given(input.points, rows.offsets.data(), rows.indices.data());
       trees = internal::orient_along_spanning_forest(input.points, given, k, input.normals);
     }
@@ -253,5 +145,9 @@ void orient_normals_towards_viewpoint(PointRange& points, const Point& viewpoint
 
 } // namespace Sigmoid_neighborhoods
 } // namespace CGAL
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE
+#include <CGAL/Sigmoid_neighborhoods/internal/orient_normals_impl.h>
+#endif
 
 #endif // CGAL_SIGMOID_NEIGHBORHOODS_ORIENT_NORMALS_H

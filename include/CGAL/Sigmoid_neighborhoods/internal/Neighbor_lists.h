@@ -176,6 +176,12 @@ Neighbor_query neighbor_query(const std::vector<Double_point>& points, const Nam
     return Neighbor_query(points);
 }
 
+// The k nearest other points of every point of `query` in rows of min(k, n - 1), ordered by
+// is_nearer(), on `threads` threads (kernel_threads()): compute_k_nearest_neighbors(), and what the
+// spanning forest's sequential walk reads. A kernel (config.h).
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Neighbor_lists nearest_neighbor_rows(const Neighbor_query& query, unsigned int k,
+                                                                        unsigned int threads);
+
 // N_i(k) of every point needs k neighbors: rows the caller gave may be shorter.
 inline void check_neighborhood_size(const Neighbor_query& query, unsigned int k)
 {
@@ -239,5 +245,9 @@ double mean_neighbor_distance(const Neighbor_query& query, unsigned int k, unsig
 } // namespace internal
 } // namespace Sigmoid_neighborhoods
 } // namespace CGAL
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists_impl.h>
+#endif
 
 #endif // CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_NEIGHBOR_LISTS_H

@@ -6,6 +6,8 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_NEIGHBOR_QUERY_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_NEIGHBOR_QUERY_H
 
+#include <CGAL/Sigmoid_neighborhoods/config.h>
+
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Search_traits_3.h>
 #include <CGAL/Search_traits_adapter.h>
@@ -123,15 +125,7 @@ class Neighbor_query
 
 public:
   // `points` must outlive the query.
-  explicit Neighbor_query(const std::vector<Double_point>& points)
-    : m_points(points), m_map{&points}, m_traits(m_map),
-      m_tree(boost::counting_iterator<std::uint32_t>(0),
-             boost::counting_iterator<std::uint32_t>(std::uint32_t(points.size())), Splitter(), m_traits)
-  {
-    // before any parallel query: queries on a built tree are read-only (CGAL's build() needs a point)
-    if(!points.empty())
-      m_tree.build();
-  }
+  explicit Neighbor_query(const std::vector<Double_point>& points);
 
   // The caller's rows (checked by check_neighbor_rows()) instead of the tree: no tree is built.
   Neighbor_query(const std::vector<Double_point>& points, std::vector<std::size_t> offsets,
@@ -165,58 +159,10 @@ public:
 
   // The `k` nearest points of point `i` other than `i` itself (|result| = min(k, n - 1)),
   // ordered by is_nearer(). Thread-safe.
-  void query(std::uint32_t i, unsigned int k, std::vector<Neighbor>& result) const
-  {
-    if(m_given)
-    {
-      // the first k entries of the row, in the caller's order
-      result.clear();
-      const Double_point& p = m_points[i];
-      const std::size_t end = (std::min)(m_offsets[i] + k, m_offsets[i + 1]);
-      for(std::size_t e = m_offsets[i]; e < end; ++e)
-      {
-        const std::uint32_t j = m_indices[e];
-        const Double_point& q = m_points[j];
-        const double dx = q.x() - p.x(), dy = q.y() - p.y(), dz = q.z() - p.z();
-        result.push_back(Neighbor{j, dx * dx + dy * dy + dz * dz});
-      }
-      return;
-    }
-    const std::size_t n = m_points.size();
-    const std::size_t wanted = (std::min)(std::size_t(k), n - 1);
-    // One more than needed (k others + i itself + 1) tells whether a tie crosses the boundary.
-    std::size_t asked = (std::min)(wanted + 2, n);
-    for(;;)
-    {
-      result.clear();
-      // unsorted: the one sort is ours, with the tie rule
-      Search search(m_tree, m_points[i], static_cast<unsigned int>(asked), 0., true, Distance(m_map), false);
-      for(const auto& found : search)
-        result.push_back(Neighbor{found.first, found.second});
-      sort_by_nearness(result);
-      const double farthest = result.empty() ? 0. : result.back().squared_distance;
-      result.erase(std::remove_if(result.begin(), result.end(),
-                                  [i](const Neighbor& x) { return x.index == i; }),
-                   result.end());
-      // Every point closer than the farthest returned one is in `result`. The selection is
-      // exact unless points at the k-th distance may remain outside: then ask for more.
-      if(wanted == 0 || asked >= n || result.size() < wanted ||
-         result[wanted - 1].squared_distance < farthest)
-        break;
-      asked = (std::min)(2 * asked, n);
-    }
-    result.resize((std::min)(result.size(), wanted));
-  }
+  void query(std::uint32_t i, unsigned int k, std::vector<Neighbor>& result) const;
 
   // The points j != i with |p_j - p_i|^2 <= radius^2, ordered by is_nearer(). Thread-safe.
-  void query_ball(std::uint32_t i, double radius, std::vector<Neighbor>& result) const
-  {
-    CGAL_precondition(!m_given);
-    result.clear();
-    const Sphere sphere(i, radius * (1. + BALL_SEARCH_MARGIN), 0., m_traits);
-    m_tree.search(boost::make_function_output_iterator(Ball_collector{&m_points, i, radius * radius, &result}), sphere);
-    sort_by_nearness(result);
-  }
+  void query_ball(std::uint32_t i, double radius, std::vector<Neighbor>& result) const;
 
   std::size_t size() const { return m_points.size(); }
   const std::vector<Double_point>& points() const { return m_points; }
@@ -237,5 +183,9 @@ private:
 } // namespace internal
 } // namespace Sigmoid_neighborhoods
 } // namespace CGAL
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query_impl.h>
+#endif
 
 #endif // CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_NEIGHBOR_QUERY_H

@@ -598,20 +598,6 @@ private:
   int m_equal_pair = -1;
 };
 
-// Runs the search on every point, on the shared `query`; `sink(i, record)` is called in index order.
-template <typename ConcurrencyTag, typename Sink>
-void optimal_search_all(const Oriented_points& input, const Neighbor_query& query, const Search_settings& settings,
-                        const Sink& sink)
-{
-  check_enough_points(input.size(), settings.k_max);
-  check_neighborhood_size(query, settings.k_max);
-  const Optimal_search search(settings);
-  for_each_neighborhood<ConcurrencyTag, Optimal_sigmoid_neighborhood>(
-    input, query, settings.k_max, settings.threads, [&search] { return search.make_scratch(); },
-    [&search](std::size_t, const Local_neighborhood& local, Optimal_search::Scratch& s) { return search(local, s); },
-    sink, search.needs_angles());
-}
-
 } // namespace internal
 } // namespace Sigmoid_neighborhoods
 } // namespace CGAL

@@ -67,6 +67,15 @@ std::size_t thread_count(unsigned int requested)
 #endif
 }
 
+// The threads a kernel of the package (see config.h) runs a call of `ConcurrencyTag` on: 1 for a
+// sequential tag, else `requested` (0: the default). The kernels are not templates on the tag.
+template <typename ConcurrencyTag>
+unsigned int kernel_threads(unsigned int requested)
+{
+  check_concurrency_tag<ConcurrencyTag>();
+  return is_parallel<ConcurrencyTag>() ? requested : 1u;
+}
+
 // Runs `body(i, scratch)` for i in [0, n) on `threads` threads (0: the default), with one
 // `Scratch` per thread built by `make_scratch()`. Every index is processed by one call whose
 // result depends on `i` only, so the outcome is the same, bit for bit, for any number of threads.

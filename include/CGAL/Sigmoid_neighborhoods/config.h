@@ -1,0 +1,26 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+//
+// How the package's kernels are built. The public functions are templates on the caller's ranges,
+// maps and concurrency tag; each copies its input into the package's own types (`Double_point`,
+// `Eigen::Vector3d`) and runs a kernel on those types only: the kd-tree, the optimal search, the
+// normal fitting, the spanning forest. Header-only by default: every translation unit that calls one
+// compiles it. With CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE defined, the headers declare the
+// kernels only and the library CGAL::Sigmoid_neighborhoods_core (src/Sigmoid_neighborhoods/core.cpp)
+// defines them, compiled once; linking that CMake target defines the macro for its users. Every
+// translation unit of a program must agree; the results are the same, bit for bit.
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_CONFIG_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_CONFIG_H
+
+/// \cond SKIP_IN_MANUAL
+#if defined(CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE)
+#  define CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION
+#else
+#  define CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION inline
+#endif
+/// \endcond
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_CONFIG_H
