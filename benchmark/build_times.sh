@@ -34,8 +34,21 @@ row() { echo "| $1 | $2 |" | tee -a "$table"; }
 seconds() { local s=$1; shift; local t0; t0=$(date +%s.%N); "$@" > "$work/last.log" 2>&1;
             echo "$(date +%s.%N) $t0" | awk '{printf "%.0f\n", $1 - $2}' > "$work/$s.seconds"; }
 # A change that a compiler cache cannot serve (a comment would be: ccache compares the preprocessed
-# text): a new declaration at the end of the file.
-edit() { echo "[[maybe_unused]] static const int build_times_$(date +%s%N) = 0;" >> "$1"; }
+# text): a new declaration at the end of the file, inside a header's include guard (a unit may include
+# the header twice).
+edit() {
+  local declaration="[[maybe_unused]] static const int build_times_$(date +%s%N) = 0;"
+  case $1 in
+    *.h) /usr/bin/python3 - "$1" "$declaration" <<'PY' ;;
+import sys
+path, declaration = sys.argv[1], sys.argv[2]
+text = open(path).read()
+guard = text.rindex("#endif")
+open(path, "w").write(text[:guard] + declaration + "\n\n" + text[guard:])
+PY
+    *) echo "$declaration" >> "$1" ;;
+  esac
+}
 
 {
   echo "Machine: $(nproc) cores, $(awk '/MemTotal/ {printf "%.0f GiB", $2 / 1048576}' /proc/meminfo)," \
