@@ -34,6 +34,18 @@ grep -q "22300 points from 1 file(s) (1314 trained on)" "$dir/capped.txt" || fai
 sed -n 2p "$dir/capped1.bin" | grep -q '"max_per_class":500' || fail "the cap is not in the model"
 cmp "$dir/capped1.bin" "$dir/capped2.bin" || fail "the forests of 1 and 2 threads differ"
 
+# --sigmoid: the weights of multiscale-sigmoid, stored in the model (20deg and 50deg in radians);
+# more than two angles or one out of [0, pi] is refused
+"$tool" classify train "$b9" -o "$dir/sigmoid.bin" --labels $labels --features multiscale-sigmoid --trees 2 \
+  --sigmoid 50deg,20deg 2> "$dir/sigmoid.txt" || fail "train --sigmoid: $(cat "$dir/sigmoid.txt")"
+sed -n 2p "$dir/sigmoid.bin" | grep -q '"sigmoid":\[0\.34906585039886[0-9]*,0\.87266462599716[0-9]*\]' ||
+  fail "the sigmoid is not in the model: $(sed -n 2p "$dir/sigmoid.bin" | head -c 600)"
+expect_refusal "--sigmoid needs the two angles" "$tool" classify train "$b9" -o "$dir/bad_sigmoid.bin" \
+  --labels $labels --features multiscale-sigmoid --sigmoid 10deg,20deg,30deg
+expect_refusal "200deg is not in" "$tool" classify train "$b9" -o "$dir/bad_sigmoid.bin" --labels $labels \
+  --features multiscale-sigmoid --sigmoid 200deg
+[ ! -e "$dir/bad_sigmoid.bin" ] || fail "a refused --sigmoid wrote a model"
+
 "$tool" classify predict "$dir/model.bin" "$b9" -o "$dir/predicted.ply" --graphcut 0.2 2> "$dir/predict.txt" \
   || fail "predict: $(cat "$dir/predict.txt")"
 for property in "element vertex 22300" "property int scalar_label" "property float scalar_confidence_ground" \

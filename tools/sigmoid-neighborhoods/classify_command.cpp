@@ -24,7 +24,8 @@ namespace classification {
 const char* const CLASSIFY_USAGE =
   "usage: sigmoid-neighborhoods classify train FILE... -o MODEL [--labels MAP] [--features GROUPS]\n"
   "                                [--trees 25] [--depth 20] [--feature-order-seed N] [--max-per-class N]\n"
-  "                                [--pyramid-cell 0.5] [--pyramid-levels 5] [normals] [--threads N]\n"
+  "                                [--pyramid-cell 0.5] [--pyramid-levels 5] [--sigmoid 30deg,60deg] [normals]\n"
+  "                                [--threads N]\n"
   "       sigmoid-neighborhoods classify predict MODEL INPUT|--catalog SOURCE [--tile NAME] -o OUT.ply\n"
   "                                [--graphcut STRENGTH] [--threads N]\n"
   "       sigmoid-neighborhoods classify evaluate MODEL FILE... -o DIR [--graphcut STRENGTH] [--threads N]\n"

@@ -34,6 +34,15 @@ Feature_options read_feature_options(const Arguments& args)
     throw Usage_error("--pyramid-cell must be a positive cell size in metres");
   if(o.pyramid_levels < 1 || o.pyramid_levels > 32)
     throw Usage_error("--pyramid-levels must be 1 to 32");
+  if(args.has("--sigmoid"))
+  {
+    // the smaller angle is a, the larger b; one angle is a step (a = b)
+    const std::vector<double> ab = read_angle_list(args, "--sigmoid", {});
+    if(ab.size() > 2)
+      throw Usage_error("--sigmoid needs the two angles A,B of the weights (e.g. 30deg,60deg)");
+    o.sigmoid_a = ab.front();
+    o.sigmoid_b = ab.back();
+  }
   return o;
 }
 
@@ -44,7 +53,7 @@ int run_classify_train(int argc, char** argv)
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT + 1,
                        with_normal_options({"-o", "--output", "--labels", "--features", "--trees", "--depth",
                                             "--feature-order-seed", "--max-per-class", "--threads", "--pyramid-cell",
-                                            "--pyramid-levels"}),
+                                            "--pyramid-levels", "--sigmoid"}),
                        with_normal_flags({"-h", "--help"}), NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, CLASSIFY_USAGE))
   {

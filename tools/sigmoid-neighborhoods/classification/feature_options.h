@@ -70,8 +70,13 @@ inline const char* FEATURE_GROUPS_USAGE =
   "      dimensionality  the same at the E_dim-optimal k, equal weights, and k\n"
   "      optimal         the same at the optimal sigmoid triple (a*, b*, k*), and k, a, b, the radius\n"
   "      multiscale      the eigen features at k = 10, 25, 50, 100, equal weights\n"
-  "      multiscale-sigmoid  the same with the sigmoid weights of --sigmoid A,B (default 30deg,60deg)\n"
-  "      height          z above the lowest point, below the highest and the range in 2.5, 5, 10 m cells\n";
+  "      multiscale-sigmoid  the same with the sigmoid weights of --sigmoid A,B (default 30deg,60deg; the\n"
+  "                      smaller angle is a, the larger b, one angle a step; pyramid-sigmoid's weights too)\n"
+  "      height          z above the lowest point, below the highest and the range in 2.5, 5, 10 m cells\n"
+  "      pyramid         the eigen features at k = 10 on voxel grids of --pyramid-cell x 2^l metres, l below\n"
+  "                      --pyramid-levels, each point's from its nearest representative, and the heights\n"
+  "                      in the same cells (scales in metres: a model applies at another density)\n"
+  "      pyramid-sigmoid the same with the sigmoid weights of --sigmoid\n";
 
 inline const std::vector<std::string>& known_feature_groups()
 {
