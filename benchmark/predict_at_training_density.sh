@@ -33,12 +33,11 @@ for features in $sets; do
         "$tool" classify predict "$run/model.json" "$labeled/ign_lidarhd_$t.las" -o "$run/dense_$t.ply" > /dev/null 2>&1
         "$tool" classify predict "$run/model.json" "$thinned/ign_lidarhd_$t.las" -o "$run/thinned_$t.ply" > /dev/null 2>&1
       done
-      # shellcheck disable=SC2046
-      /usr/bin/python3 "$here/propagate_labels.py" --truth "$(comma $(tiles "$labeled" .las $east))" \
-        --predicted "$(comma $(tiles "$run" .ply $east | sed 's|ign_lidarhd_|dense_|g'))" > "$run/dense.txt"
-      # shellcheck disable=SC2046
-      /usr/bin/python3 "$here/propagate_labels.py" --truth "$(comma $(tiles "$labeled" .las $east))" \
-        --predicted "$(comma $(tiles "$run" .ply $east | sed 's|ign_lidarhd_|thinned_|g'))" > "$run/thinned.txt"
+      for kind in dense thinned; do
+        # shellcheck disable=SC2046
+        /usr/bin/python3 "$here/propagate_labels.py" --truth "$(comma $(tiles "$labeled" .las $east))" \
+          --predicted "$(comma $(for t in $east; do printf '%s ' "$run/${kind}_$t.ply"; done))" > "$run/$kind.txt"
+      done
       rm -f "$run"/*.ply "$run/model.json"
     fi
     echo "$features order $seed: dense: $(cat "$run/dense.txt")"
