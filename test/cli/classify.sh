@@ -46,6 +46,30 @@ expect_refusal "200deg is not in" "$tool" classify train "$b9" -o "$dir/bad_sigm
   --features multiscale-sigmoid --sigmoid 200deg
 [ ! -e "$dir/bad_sigmoid.bin" ] || fail "a refused --sigmoid wrote a model"
 
+# CGAL's scales in metres (--cgal-voxel, --cgal-scales) and the sigmoid weights on some levels of the
+# pyramid only, stored in the model and applied by predict
+"$tool" classify train "$b9" -o "$dir/metric.bin" --labels $labels --features cgal,pyramid-sigmoid --trees 2 \
+  --cgal-voxel 0.5 --cgal-scales 2 --pyramid-cell 1 --pyramid-levels 3 --pyramid-sigmoid-cells 2,1 \
+  2> "$dir/metric.txt" || fail "train --cgal-voxel: $(cat "$dir/metric.txt")"
+header=$(sed -n 2p "$dir/metric.bin")
+for piece in '"cgal_scales":2' '"cgal_voxel":0.5' '"sigmoid_cells":\[2.0,1.0\]' '"linearity_sigmoid_pyr1"' \
+             '"linearity_sigmoid_pyr2"' '"linearity_pyr4"' '"vertical_range_pyr4"'; do
+  echo "$header" | grep -q "$piece" || fail "no $piece in the model: $(echo "$header" | head -c 600)"
+done
+! echo "$header" | grep -q '"linearity_sigmoid_pyr4"\|"linearity_pyr1"' || fail "a level with both weights or none"
+# two scales of CGAL's features: fewer than its five (the 2 x 10 eigen features and the 3 x 3 heights of the pyramid besides)
+[ "$(echo "$header" | grep -o '"eigenvalue[a-z_]*0_[0-9]*"' | sort -u | wc -l)" -eq 2 ] ||
+  fail "not two scales of CGAL's eigenvalues: $(echo "$header" | grep -o '"eigenvalue[a-z_0-9]*"' | sort -u | tr '\n' ' ')"
+"$tool" classify predict "$dir/metric.bin" "$b9" -o "$dir/metric.ply" 2> "$dir/metric_predict.txt" ||
+  fail "predict with --cgal-voxel: $(cat "$dir/metric_predict.txt")"
+expect_refusal "not a cell size of the pyramid" "$tool" classify train "$b9" -o "$dir/bad_metric.bin" --labels $labels \
+  --features pyramid-sigmoid --pyramid-cell 1 --pyramid-sigmoid-cells 3
+expect_refusal "must be a positive voxel size" "$tool" classify train "$b9" -o "$dir/bad_metric.bin" --labels $labels \
+  --features cgal --cgal-voxel 0
+expect_refusal "must be 1 to 32" "$tool" classify train "$b9" -o "$dir/bad_metric.bin" --labels $labels \
+  --features cgal --cgal-scales 0
+[ ! -e "$dir/bad_metric.bin" ] || fail "a refused option wrote a model"
+
 "$tool" classify predict "$dir/model.bin" "$b9" -o "$dir/predicted.ply" --graphcut 0.2 2> "$dir/predict.txt" \
   || fail "predict: $(cat "$dir/predict.txt")"
 for property in "element vertex 22300" "property int scalar_label" "property float scalar_confidence_ground" \
@@ -79,6 +103,16 @@ grep -q "^| Q | k20 + height | yes | 19 | 0\.[0-9]* \[0\.[0-9]*, 0\.[0-9]*\] |" 
   || fail "no row of set Q in experiment.md"
 [ -s "$dir/experiment/figure_tile.png" ] || fail "no figure"
 head -1 "$dir/experiment/figure_tile.csv" | grep -q "^x,y,z,truth,P,Q$" || fail "figure columns"
+# the experiment reads the feature options as train does: a pyramid of two levels, 2 x (10 + 3) features,
+# and with both pyramid groups, the heights once and the sigmoid weights on one level: 26 + 10
+"$tool" classify experiment --train "$b9" --test "$b9" -o "$dir/experiment_pyramid" --orders 1 --cv-orders 0 \
+  --sets "P=pyramid;PS=pyramid,pyramid-sigmoid" --labels $labels --trees 2 --pyramid-cell 2 --pyramid-levels 2 \
+  --pyramid-sigmoid-cells 4 2> "$dir/experiment_pyramid.txt" ||
+  fail "experiment --pyramid-levels: $(cat "$dir/experiment_pyramid.txt")"
+grep -q "^| P | pyramid | no | 26 |" "$dir/experiment_pyramid/experiment.md" ||
+  fail "the experiment's pyramid is not of two levels: $(grep '^| P' "$dir/experiment_pyramid/experiment.md")"
+grep -q "^| PS | pyramid + pyramid-sigmoid | no | 36 |" "$dir/experiment_pyramid/experiment.md" ||
+  fail "the experiment's two pyramid groups are not train's: $(grep '^| PS' "$dir/experiment_pyramid/experiment.md")"
 
 # refusals, nothing written
 printf 'ply\nformat ascii 1.0\nelement vertex 30\nproperty float x\nproperty float y\nproperty float z\nend_header\n' > "$dir/unlabeled.ply"

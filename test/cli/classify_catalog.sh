@@ -84,7 +84,7 @@ tiles_done=$(date +%s)
 # checked to be the union's, the halo widened until they are
 "$tool" classify train "$labeled/ign_lidarhd_77050_627755.las" -o "$dir/pyramid.bin" --features pyramid,pyramid-sigmoid \
   --trees 4 --depth 12 2> "$dir/train_pyramid.txt" || fail "train pyramid: $(cat "$dir/train_pyramid.txt")"
-grep -q '"pyramid":{"cell":0.5,"cell_sizes":\[0.5,1.0,2.0,4.0,8.0\],"k":10,"levels":5}' "$dir/pyramid.bin" \
+grep -q '"pyramid":{"cell":0.5,"cell_sizes":\[0.5,1.0,2.0,4.0,8.0\],"k":10,"levels":5,"sigmoid_cells":\[\]}' "$dir/pyramid.bin" \
   || fail "the pyramid model does not store its cell sizes"
 # the tiles from a 10 m halo (too narrow: read again, wider), then one from the default first halo
 predict_and_compare pyramid.bin pyramid "--halo 10"

@@ -14,8 +14,12 @@
 #include "command_line.h"
 #include "model_input.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace sigmoid_tool {
 
@@ -24,18 +28,22 @@ namespace classification {
 const char* const CLASSIFY_USAGE =
   "usage: sigmoid-neighborhoods classify train FILE... -o MODEL [--labels MAP] [--features GROUPS]\n"
   "                                [--trees 25] [--depth 20] [--feature-order-seed N] [--max-per-class N]\n"
-  "                                [--pyramid-cell 0.5] [--pyramid-levels 5] [--sigmoid 30deg,60deg] [normals]\n"
-  "                                [--threads N]\n"
+  "                                [--pyramid-cell 0.5] [--pyramid-levels 5] [--pyramid-sigmoid-cells C,...]\n"
+  "                                [--sigmoid 30deg,60deg]"
+  " [--cgal-voxel S] [--cgal-scales 5] [normals] [--threads N]\n"
   "       sigmoid-neighborhoods classify predict MODEL INPUT|--catalog SOURCE [--tile NAME] -o OUT.ply\n"
   "                                [--graphcut STRENGTH] [--threads N]\n"
   "       sigmoid-neighborhoods classify evaluate MODEL FILE... -o DIR [--graphcut STRENGTH] [--threads N]\n"
   "       sigmoid-neighborhoods classify experiment --train FILE,... --test FILE,... -o DIR [--sets SETS]\n"
   "                                [--orders 10] [--cv-orders 1] [--graphcut 0.2] [--labels MAP] [--trees 25]\n"
-  "                                [--depth 20] [--max-per-class N] [normals]\n"
+  "                                [--depth 20] [--max-per-class N] [the feature options of train] [normals]\n"
   "  FILE: a labeled point set: LAS or LAZ (classification codes) or PLY with a label/class/classification property\n"
   "  --labels MAP: the classes and their codes, other codes ignored (default ground=2,low_vegetation=3+4,\n"
   "      high_vegetation=5,building=6)\n"
   "  --feature-order-seed N: the features in a shuffled order (CGAL's forest depends on it; 0: as listed)\n"
+  "  --cgal-voxel S: the voxel of the group cgal's first scale in metres, doubled per scale, stored in the\n"
+  "      model (default: CGAL's choice, the mean range of each file's 12 nearest neighbors, which follows\n"
+  "      its density); --cgal-scales N: its number of scales\n"
   "  --max-per-class N: train on at most N points of each class, evenly spaced in the files' order (0: all)\n"
   "  training runs its trees in parallel on TBB when the build has it: the same forest for any --threads\n"
   "  --graphcut STRENGTH: CGAL's graph-cut regularisation of the labels on 12 neighbors (e.g. 0.2)\n"
@@ -56,6 +64,58 @@ const char* const CLASSIFY_USAGE =
   "      DIR/experiment.md, experiment.csv, experiment.json and runs.csv; each set is also cross-validated on\n"
   "      the training files (each left out in turn, --cv-orders orders), and the set and graph-cut of the\n"
   "      best cross-validated mean IoU are reported as the choice\n";
+
+std::vector<std::string> with_feature_options(std::vector<std::string> valued)
+{
+  for(const char* option : {"--threads", "--sigmoid", "--pyramid-cell", "--pyramid-levels", "--pyramid-sigmoid-cells",
+                            "--cgal-voxel", "--cgal-scales"})
+    valued.push_back(option);
+  return valued;
+}
+
+Feature_options read_feature_options(const Arguments& args)
+{
+  Feature_options o;
+  o.threads = read_threads(args);
+  o.pyramid_cell = args.get_double("--pyramid-cell", o.pyramid_cell);
+  o.pyramid_levels = args.get_unsigned("--pyramid-levels", o.pyramid_levels);
+  if(!(o.pyramid_cell > 0.) || !std::isfinite(o.pyramid_cell))
+    throw Usage_error("--pyramid-cell must be a positive cell size in metres");
+  if(o.pyramid_levels < 1 || o.pyramid_levels > 32)
+    throw Usage_error("--pyramid-levels must be 1 to 32");
+  if(args.has("--sigmoid"))
+  {
+    // the smaller angle is a, the larger b; one angle is a step (a = b)
+    const std::vector<double> ab = read_angle_list(args, "--sigmoid", {});
+    if(ab.size() > 2)
+      throw Usage_error("--sigmoid needs the two angles A,B of the weights (e.g. 30deg,60deg)");
+    o.sigmoid_a = ab.front();
+    o.sigmoid_b = ab.back();
+  }
+  if(args.has("--pyramid-sigmoid-cells"))
+  {
+    const std::vector<double> cells = o.pyramid_cell_sizes();
+    for(const std::string& item : split(args.get("--pyramid-sigmoid-cells"), ','))
+    {
+      char* end = nullptr;
+      const double cell = std::strtod(item.c_str(), &end);
+      if(item.empty() || *end != '\0' || std::find(cells.begin(), cells.end(), cell) == cells.end())
+        throw Usage_error("--pyramid-sigmoid-cells: '" + item + "' is not a cell size of the pyramid (--pyramid-cell x 2^l)");
+      if(std::find(o.pyramid_sigmoid_cells.begin(), o.pyramid_sigmoid_cells.end(), cell) == o.pyramid_sigmoid_cells.end())
+        o.pyramid_sigmoid_cells.push_back(cell);
+    }
+  }
+  if(args.has("--cgal-voxel"))
+  {
+    o.cgal_voxel = args.get_double("--cgal-voxel", 0.);
+    if(!(o.cgal_voxel > 0.) || !std::isfinite(o.cgal_voxel))
+      throw Usage_error("--cgal-voxel must be a positive voxel size in metres");
+  }
+  o.cgal_scales = args.get_unsigned("--cgal-scales", o.cgal_scales);
+  if(o.cgal_scales < 1 || o.cgal_scales > 32)
+    throw Usage_error("--cgal-scales must be 1 to 32");
+  return o;
+}
 
 } // namespace classification
 

@@ -26,6 +26,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -115,10 +116,15 @@ Featured_file with_set(const Experiment_file& e, const Feature_set_spec& set)
   f.model.points = e.file.model.points; // for graph-cut's neighborhoods
   f.model.labels = e.file.model.labels;
   f.truth = e.file.truth;
+  // each group was computed alone: a column that an earlier group of the set gave (the heights of both
+  // pyramid groups, the equal-weight levels of pyramid-sigmoid beside pyramid) is kept once, as train
+  // computes the set
+  std::set<std::string> names;
   for(const std::string& group : set.groups)
   {
-    const auto& columns = e.groups.at(group);
-    f.columns.insert(f.columns.end(), columns.begin(), columns.end());
+    for(const Feature_column& c : e.groups.at(group))
+      if(names.insert(c.name).second)
+        f.columns.push_back(c);
     f.seconds_features += e.seconds.at(group);
   }
   return f;
@@ -193,8 +199,7 @@ std::vector<Set_summary> summarize(const std::vector<Feature_set_spec>& sets, co
           for(const std::string& g : set.groups)
             s.feature_seconds += e.seconds.at(g);
       if(!train_files.empty())
-        for(const std::string& g : set.groups)
-          s.features += train_files.front().groups.at(g).size();
+        s.features = with_set(train_files.front(), set).columns.size();
       result.push_back(std::move(s));
     }
   return result;
@@ -400,9 +405,9 @@ bool write_experiment_figure(const std::string& dir, const std::vector<Feature_s
 int run_classify_experiment(int argc, char** argv)
 {
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT + 1,
-                       with_normal_options({"-o", "--output", "--train", "--test", "--sets", "--orders", "--graphcut",
-                                            "--labels", "--trees", "--depth", "--threads", "--cv-orders",
-                                            "--max-per-class"}),
+                       with_feature_options(with_normal_options({"-o", "--output", "--train", "--test", "--sets",
+                                                                 "--orders", "--graphcut", "--labels", "--trees",
+                                                                 "--depth", "--cv-orders", "--max-per-class"})),
                        with_normal_flags({"-h", "--help"}), NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, CLASSIFY_USAGE))
     return EXIT_OK;
@@ -420,7 +425,7 @@ int run_classify_experiment(int argc, char** argv)
   Classifier_settings base;
   base.labels = parse_label_mapping(args.get("--labels", DEFAULT_LABELS));
   base.normals = classify_normal_options(args);
-  base.features.threads = read_threads(args);
+  base.features = read_feature_options(args); // the groups are each set's
   base.trees = args.get_unsigned("--trees", 25);
   base.depth = args.get_unsigned("--depth", 20);
   base.max_per_class = args.get_unsigned("--max-per-class", 0);

@@ -21,39 +21,12 @@ namespace sigmoid_tool {
 
 using namespace classification; // what the steps share: classification/classify_common.h
 
-namespace {
-
-Feature_options read_feature_options(const Arguments& args)
-{
-  Feature_options o;
-  o.groups = parse_feature_groups(args.get("--features", DEFAULT_FEATURE_GROUPS));
-  o.threads = read_threads(args);
-  o.pyramid_cell = args.get_double("--pyramid-cell", o.pyramid_cell);
-  o.pyramid_levels = args.get_unsigned("--pyramid-levels", o.pyramid_levels);
-  if(!(o.pyramid_cell > 0.) || !std::isfinite(o.pyramid_cell))
-    throw Usage_error("--pyramid-cell must be a positive cell size in metres");
-  if(o.pyramid_levels < 1 || o.pyramid_levels > 32)
-    throw Usage_error("--pyramid-levels must be 1 to 32");
-  if(args.has("--sigmoid"))
-  {
-    // the smaller angle is a, the larger b; one angle is a step (a = b)
-    const std::vector<double> ab = read_angle_list(args, "--sigmoid", {});
-    if(ab.size() > 2)
-      throw Usage_error("--sigmoid needs the two angles A,B of the weights (e.g. 30deg,60deg)");
-    o.sigmoid_a = ab.front();
-    o.sigmoid_b = ab.back();
-  }
-  return o;
-}
-
-} // namespace
-
 int run_classify_train(int argc, char** argv)
 {
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT + 1,
-                       with_normal_options({"-o", "--output", "--labels", "--features", "--trees", "--depth",
-                                            "--feature-order-seed", "--max-per-class", "--threads", "--pyramid-cell",
-                                            "--pyramid-levels", "--sigmoid"}),
+                       with_feature_options(with_normal_options({"-o", "--output", "--labels", "--features",
+                                                                 "--trees", "--depth", "--feature-order-seed",
+                                                                 "--max-per-class"})),
                        with_normal_flags({"-h", "--help"}), NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, CLASSIFY_USAGE))
   {
@@ -68,6 +41,7 @@ int run_classify_train(int argc, char** argv)
   Trained t;
   t.settings.labels = parse_label_mapping(args.get("--labels", DEFAULT_LABELS));
   t.settings.features = read_feature_options(args);
+  t.settings.features.groups = parse_feature_groups(args.get("--features", DEFAULT_FEATURE_GROUPS));
   t.settings.normals = classify_normal_options(args);
   t.settings.trees = args.get_unsigned("--trees", 25);
   t.settings.depth = args.get_unsigned("--depth", 20);

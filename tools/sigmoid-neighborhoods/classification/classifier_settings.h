@@ -15,6 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -46,12 +47,14 @@ inline nlohmann::json settings_json(const Classifier_settings& s)
                    {"k_min", s.features.k_min},           {"k_max", s.features.k_max},
                    {"scales", s.features.scales},         {"sigmoid", {s.features.sigmoid_a, s.features.sigmoid_b}},
                    {"cell_sizes", s.features.cell_sizes}, {"cgal_scales", s.features.cgal_scales}};
+  j["features"]["cgal_voxel"] = s.features.cgal_voxel;
   // the pyramid's scales in metres, so that the model applies them at any density; cell_sizes is
   // what cell and levels give, for the reader
   j["features"]["pyramid"] = {{"cell", s.features.pyramid_cell},
                               {"levels", s.features.pyramid_levels},
                               {"k", s.features.pyramid_k},
-                              {"cell_sizes", s.features.pyramid_cell_sizes()}};
+                              {"cell_sizes", s.features.pyramid_cell_sizes()},
+                              {"sigmoid_cells", s.features.pyramid_sigmoid_cells}};
   j["normals"] = {{"source", s.normals.source == SN::Normal_source::JET ? "jet" : "pca"},
                   {"neighbors", s.normals.neighbors},
                   {"orientation", SN::normal_orientation_name(s.normals.orientation)},
@@ -84,6 +87,8 @@ inline Classifier_settings settings_from_json(const nlohmann::json& j, const std
     const std::vector<double> sigmoid = f.at("sigmoid").get<std::vector<double>>();
     s.features.cell_sizes = f.at("cell_sizes").get<std::vector<double>>();
     s.features.cgal_scales = f.at("cgal_scales").get<unsigned int>();
+    if(f.contains("cgal_voxel")) // models written before it have none: CGAL's own choice
+      s.features.cgal_voxel = f.at("cgal_voxel").get<double>();
     if(sigmoid.size() != 2 || !(sigmoid[0] >= 0. && sigmoid[0] <= sigmoid[1] && sigmoid[1] <= CGAL_PI))
       throw bad("the sigmoid is not 0 <= a <= b <= pi");
     s.features.sigmoid_a = sigmoid[0];
@@ -92,7 +97,8 @@ inline Classifier_settings settings_from_json(const nlohmann::json& j, const std
     if(s.features.fixed_k < 1 || s.features.fixed_k > largest_k || s.features.k_min < 1 ||
        s.features.k_min > s.features.k_max || s.features.k_max > largest_k || s.features.scales.empty() ||
        s.features.scales.size() > 64 || s.features.cell_sizes.empty() || s.features.cell_sizes.size() > 64 ||
-       s.features.cgal_scales < 1 || s.features.cgal_scales > 32)
+       s.features.cgal_scales < 1 || s.features.cgal_scales > 32 || !(s.features.cgal_voxel >= 0.) ||
+       !std::isfinite(s.features.cgal_voxel))
       throw bad("feature settings out of range");
     for(unsigned int k : s.features.scales)
       if(k < 1 || k > largest_k)
@@ -112,6 +118,14 @@ inline Classifier_settings settings_from_json(const nlohmann::json& j, const std
         throw bad("pyramid settings out of range");
       if(p.contains("cell_sizes") && p.at("cell_sizes").get<std::vector<double>>() != s.features.pyramid_cell_sizes())
         throw bad("the pyramid's cell sizes are not its cell times 1, 2, 4 ...");
+      if(p.contains("sigmoid_cells")) // empty, or absent in older models: every level
+      {
+        s.features.pyramid_sigmoid_cells = p.at("sigmoid_cells").get<std::vector<double>>();
+        const std::vector<double> cells = s.features.pyramid_cell_sizes();
+        for(double c : s.features.pyramid_sigmoid_cells)
+          if(std::find(cells.begin(), cells.end(), c) == cells.end())
+            throw bad("a sigmoid cell is not a cell size of the pyramid");
+      }
     }
     const nlohmann::json& n = j.at("normals");
     s.normals.source = n.at("source").get<std::string>() == "jet" ? SN::Normal_source::JET : SN::Normal_source::PCA;

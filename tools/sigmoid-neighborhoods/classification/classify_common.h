@@ -64,6 +64,11 @@ struct Featured_file
 
 SN::Normal_options classify_normal_options(const Arguments& args);
 
+// The options of the feature groups that train and experiment share (--threads, --sigmoid, --pyramid-*,
+// --cgal-*; classify_command.cpp), added to `valued`; the groups are left empty: each caller's.
+std::vector<std::string> with_feature_options(std::vector<std::string> valued);
+Feature_options read_feature_options(const Arguments& args);
+
 // --graphcut STRENGTH (0: none).
 double read_graphcut(const Arguments& args);
 

@@ -49,7 +49,7 @@ inline void append_point_features(const std::vector<SN::Point_features>& feature
 }
 
 // CGAL's generator on its own neighbor structures (it builds them), its features read back as columns.
-inline void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scales,
+inline void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scales, double voxel,
                                  std::vector<Feature_column>& columns)
 {
   typedef SN::Oriented_point_set::Kernel Kernel;
@@ -62,7 +62,7 @@ inline void append_cgal_features(const SN::Oriented_point_set& model, unsigned i
   // their last bits from run to run (so would the forests trained on them); the features themselves
   // are then computed side by side, each on its own.
   CGAL::Classification::Point_set_feature_generator<Kernel, Point_set, Point_set::Point_map, CGAL::Sequential_tag>
-    generator(points, points.point_map(), scales);
+    generator(points, points.point_map(), scales, voxel > 0. ? float(voxel) : -1.f);
   CGAL::Classification::Feature_set features;
   features.begin_parallel_additions();
   generator.generate_point_based_features(features);
@@ -217,7 +217,7 @@ std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set
   {
     progress(group);
     if(group == "cgal")
-      internal_classification::append_cgal_features(model, o.cgal_scales, columns);
+      internal_classification::append_cgal_features(model, o.cgal_scales, o.cgal_voxel, columns);
     else if(group == "k20" || group == "multiscale" || group == "multiscale-sigmoid")
     {
       const bool sigmoid = group == "multiscale-sigmoid";
@@ -260,22 +260,46 @@ std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set
       const bool sigmoid = group == "pyramid-sigmoid";
       if(pyramid.empty())
         pyramid = build_model_pyramid(model, o);
-      const SN::Cosine_sigmoid weights = sigmoid ? SN::Cosine_sigmoid(o.sigmoid_a, o.sigmoid_b)
-                                                 : SN::Cosine_sigmoid(CGAL_PI, CGAL_PI);
-      std::vector<std::vector<SN::Point_features>> per_point;
-      per_point.reserve(model.points.size());
-      SN::compute_pyramid_features<SN::Parallel_if_available_tag>(range, pyramid, o.pyramid_k, weights,
-                                                                  std::back_inserter(per_point),
-                                                                  SNP::number_of_threads(o.threads, maps));
       const std::vector<double> cells = o.pyramid_cell_sizes();
+      // this group's levels: with the sigmoid weights, or equal ones where the group pyramid does not give them
+      std::vector<std::size_t> weighted, equal;
       for(std::size_t l = 0; l < cells.size(); ++l)
+        if(sigmoid && o.pyramid_sigmoid_level(cells[l]))
+          weighted.push_back(l);
+        else if(!sigmoid || !has_group(o, "pyramid"))
+          equal.push_back(l);
+      std::vector<std::vector<SN::Point_features>> per_point(model.points.size());
+      for(const bool with_weights : {true, false})
+      {
+        const std::vector<std::size_t>& which = with_weights ? weighted : equal;
+        if(which.empty())
+          continue;
+        std::vector<SN::Pyramid_level> levels;
+        for(std::size_t l : which)
+          levels.push_back(pyramid[l]);
+        const SN::Cosine_sigmoid weights = with_weights ? SN::Cosine_sigmoid(o.sigmoid_a, o.sigmoid_b)
+                                                        : SN::Cosine_sigmoid(CGAL_PI, CGAL_PI);
+        std::vector<std::vector<SN::Point_features>> records;
+        records.reserve(model.points.size());
+        SN::compute_pyramid_features<SN::Parallel_if_available_tag>(range, levels, o.pyramid_k, weights,
+                                                                    std::back_inserter(records),
+                                                                    SNP::number_of_threads(o.threads, maps));
+        for(std::size_t i = 0; i < records.size(); ++i)
+          per_point[i].insert(per_point[i].end(), records[i].begin(), records[i].end());
+      }
+      // per_point holds the weighted levels, then the equal ones: the columns in that order
+      std::vector<std::size_t> order = weighted;
+      order.insert(order.end(), equal.begin(), equal.end());
+      for(std::size_t c = 0; c < order.size(); ++c)
       {
         std::vector<SN::Point_features> at_level;
         at_level.reserve(per_point.size());
         for(const auto& p : per_point)
-          at_level.push_back(p[l]);
+          at_level.push_back(p[c]);
+        const bool with_weights = c < weighted.size();
         append_point_features(at_level, shape,
-                              (sigmoid ? "_sigmoid" : "") + internal_classification::pyramid_suffix(cells[l]), columns);
+                              (with_weights ? "_sigmoid" : "") + internal_classification::pyramid_suffix(cells[order[c]]),
+                              columns);
       }
       // the heights in the levels' cells, once when both groups are given
       if(!sigmoid || !has_group(o, "pyramid"))

@@ -38,6 +38,9 @@ struct Feature_options
   double sigmoid_a = CGAL_PI / 6., sigmoid_b = CGAL_PI / 3.; // multiscale-sigmoid's weights
   std::vector<double> cell_sizes{2.5, 5., 10.};        // group height
   unsigned int cgal_scales = 5;                        // group cgal
+  // group cgal: the voxel of its first grid in metres, doubled per scale; 0: CGAL's own choice, the
+  // mean range of each file's 12 nearest neighbors, which follows the file's density
+  double cgal_voxel = 0.;
   // groups pyramid and pyramid-sigmoid: cells of pyramid_cell * 2^l metres, l < pyramid_levels. A base
   // of 0.5 m is coarser than the spacing of airborne surveys of 4 points/m^2 and more (IGN LiDAR HD:
   // 10 or more, about 0.3 m), so that every level thins and its features do not depend on the density;
@@ -45,6 +48,9 @@ struct Feature_options
   double pyramid_cell = 0.5;
   unsigned int pyramid_levels = 5;
   unsigned int pyramid_k = 10; // neighbors per level, among the level's representatives (Hackel et al. 2016)
+  // group pyramid-sigmoid: the cells whose levels have the sigmoid weights (empty: every level); the
+  // others have equal weights (given once when the group pyramid is there too)
+  std::vector<double> pyramid_sigmoid_cells;
   unsigned int threads = 0;
 
   std::vector<double> pyramid_cell_sizes() const
@@ -53,6 +59,12 @@ struct Feature_options
     for(unsigned int l = 0; l < pyramid_levels; ++l)
       sizes.push_back(std::ldexp(pyramid_cell, int(l)));
     return sizes;
+  }
+
+  bool pyramid_sigmoid_level(double cell) const
+  {
+    return pyramid_sigmoid_cells.empty() ||
+           std::find(pyramid_sigmoid_cells.begin(), pyramid_sigmoid_cells.end(), cell) != pyramid_sigmoid_cells.end();
   }
 };
 
@@ -76,7 +88,8 @@ inline const char* FEATURE_GROUPS_USAGE =
   "      pyramid         the eigen features at k = 10 on voxel grids of --pyramid-cell x 2^l metres, l below\n"
   "                      --pyramid-levels, each point's from its nearest representative, and the heights\n"
   "                      in the same cells (scales in metres: a model applies at another density)\n"
-  "      pyramid-sigmoid the same with the sigmoid weights of --sigmoid\n";
+  "      pyramid-sigmoid the same with the sigmoid weights of --sigmoid, on the levels of\n"
+  "                      --pyramid-sigmoid-cells C,... (default every level; the others with equal weights)\n";
 
 inline const std::vector<std::string>& known_feature_groups()
 {
