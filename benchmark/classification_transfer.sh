@@ -9,13 +9,16 @@
 # `classify experiment` (its feature orders, and the leave-one-tile-out cross-validation on the
 # training tiles where asked); benchmark/transfer_table.py gathers the mean IoU of each set and its
 # drop from the same-density result.
-# usage: benchmark/classification_transfer.sh TOOL OUT_DIR [ORDERS] [SETS]
+# usage: benchmark/classification_transfer.sh TOOL OUT_DIR [ORDERS] [SETS] [FEATURE OPTIONS...]
 #   e.g.  benchmark/classification_transfer.sh build/tools/sigmoid-neighborhoods/sigmoid-neighborhoods results/transfer 10
+#   the feature options of classify experiment (e.g. --cgal-voxel 0.5) apply to every set
 set -eu
 tool=$1
 out=$2
 orders=${3:-10}
 sets=${4:-"A=cgal;G_multiscale_sigmoid=cgal,multiscale-sigmoid;P=pyramid;P_sigmoid=pyramid-sigmoid;H_pyramid_sigmoid=cgal,pyramid-sigmoid"}
+shift $(( $# < 4 ? $# : 4 ))
+options="$*" # words without spaces: run() has its own arguments
 here=$(dirname "$0")
 labeled=${SN_LABELED:-$here/../../shared/data/labeled}
 python=/usr/bin/python3
@@ -42,7 +45,7 @@ run() { # condition, training folder, test folder, cross-validation orders
   [ -s "$out/$1/runs.csv" ] && { echo "$1: done before"; return; }
   start=$(date +%s)
   "$tool" classify experiment -o "$out/$1" --train "$(list "$2" $west)" --test "$(list "$3" $east)" \
-    --sets "$sets" --orders "$orders" --cv-orders "$4" --graphcut 0 > "$out/$1.log" 2>&1 ||
+    --sets "$sets" --orders "$orders" --cv-orders "$4" --graphcut 0 $options > "$out/$1.log" 2>&1 ||
     { echo "$1 failed: $(tail -1 "$out/$1.log")"; exit 1; }
   echo "$1: $(( $(date +%s) - start )) s"
 }

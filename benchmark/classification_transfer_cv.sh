@@ -7,13 +7,15 @@
 # the forest trained on the three others thinned (random, 4x) and tested on the left-out tile at full
 # density. With the leave-one-out cross-validation at one density that `classify experiment` computes,
 # this is what the default feature set of `classify train` is chosen on (benchmark/README.md).
-# usage: benchmark/classification_transfer_cv.sh TOOL OUT_DIR [SETS] [THINNING]
-#   OUT_DIR as given to classification_transfer.sh (its thinned tiles are reused); THINNING: random4
+# usage: benchmark/classification_transfer_cv.sh TOOL OUT_DIR [SETS] [THINNING] [FEATURE OPTIONS...]
+#   OUT_DIR as given to classification_transfer.sh (its thinned tiles are reused); THINNING: random4;
+#   the feature options of classify experiment (e.g. --cgal-voxel 0.5) apply to every set
 set -eu
 tool=$1
 out=$2
 sets=${3:-"A=cgal;G_multiscale_sigmoid=cgal,multiscale-sigmoid;P=pyramid;P_sigmoid=pyramid-sigmoid;H_pyramid=cgal,pyramid;H_pyramid_sigmoid=cgal,pyramid-sigmoid"}
 thinning=${4:-random4}
+shift $(( $# < 4 ? $# : 4 ))
 here=$(dirname "$0")
 labeled=${SN_LABELED:-$here/../../shared/data/labeled}
 west="77050_627755 77050_627760 77055_627755 77055_627760"
@@ -24,7 +26,7 @@ for left in $west; do
   train=$(for t in $west; do [ "$t" = "$left" ] || printf '%s,' "$out/tiles/$thinning/ign_lidarhd_$t.las"; done)
   mkdir -p "$out/cv_$thinning"
   "$tool" classify experiment -o "$folder" --train "${train%,}" --test "$labeled/ign_lidarhd_$left.las" \
-    --sets "$sets" --orders 1 --cv-orders 0 --graphcut 0 > "$folder.log" 2>&1 ||
+    --sets "$sets" --orders 1 --cv-orders 0 --graphcut 0 "$@" > "$folder.log" 2>&1 ||
     { echo "fold $left failed: $(tail -1 "$folder.log")"; exit 1; }
   echo "fold without $left done"
 done

@@ -46,10 +46,10 @@ expect_refusal "200deg is not in" "$tool" classify train "$b9" -o "$dir/bad_sigm
   --features multiscale-sigmoid --sigmoid 200deg
 [ ! -e "$dir/bad_sigmoid.bin" ] || fail "a refused --sigmoid wrote a model"
 
-# CGAL's scales in metres (--cgal-voxel, --cgal-scales) and the sigmoid weights on some levels of the
+# CGAL's scales in metres (cgal-metric, --cgal-voxel, --cgal-scales) and the sigmoid weights on some levels of the
 # pyramid only, stored in the model and applied by predict
-"$tool" classify train "$b9" -o "$dir/metric.bin" --labels $labels --features cgal,pyramid-sigmoid --trees 2 \
-  --cgal-voxel 0.5 --cgal-scales 2 --pyramid-cell 1 --pyramid-levels 3 --pyramid-sigmoid-cells 2,1 \
+"$tool" classify train "$b9" -o "$dir/metric.bin" --labels $labels --features cgal-metric,pyramid-sigmoid \
+  --trees 2 --cgal-voxel 0.5 --cgal-scales 2 --pyramid-cell 1 --pyramid-levels 3 --pyramid-sigmoid-cells 2,1 \
   2> "$dir/metric.txt" || fail "train --cgal-voxel: $(cat "$dir/metric.txt")"
 header=$(sed -n 2p "$dir/metric.bin")
 for piece in '"cgal_scales":2' '"cgal_voxel":0.5' '"sigmoid_cells":\[2.0,1.0\]' '"linearity_sigmoid_pyr1"' \
@@ -62,10 +62,19 @@ done
   fail "not two scales of CGAL's eigenvalues: $(echo "$header" | grep -o '"eigenvalue[a-z_0-9]*"' | sort -u | tr '\n' ' ')"
 "$tool" classify predict "$dir/metric.bin" "$b9" -o "$dir/metric.ply" 2> "$dir/metric_predict.txt" ||
   fail "predict with --cgal-voxel: $(cat "$dir/metric_predict.txt")"
+# the voxel is read: another one, other features, another forest (the same seed and settings otherwise)
+for voxel in 0.5 1; do
+  "$tool" classify train "$b9" -o "$dir/voxel$voxel.bin" --labels $labels --features cgal-metric --cgal-scales 2 \
+    --cgal-voxel $voxel --trees 2 2> "$dir/voxel.txt" || fail "train --cgal-voxel $voxel: $(cat "$dir/voxel.txt")"
+done
+tail -n +3 "$dir/voxel0.5.bin" > "$dir/forest0.5"; tail -n +3 "$dir/voxel1.bin" > "$dir/forest1"
+! cmp -s "$dir/forest0.5" "$dir/forest1" || fail "the forests of two voxels are the same: the voxel is not read"
 expect_refusal "not a cell size of the pyramid" "$tool" classify train "$b9" -o "$dir/bad_metric.bin" --labels $labels \
   --features pyramid-sigmoid --pyramid-cell 1 --pyramid-sigmoid-cells 3
 expect_refusal "must be a positive voxel size" "$tool" classify train "$b9" -o "$dir/bad_metric.bin" --labels $labels \
-  --features cgal --cgal-voxel 0
+  --features cgal-metric --cgal-voxel 0
+expect_refusal "cgal and cgal-metric are the same features" "$tool" classify train "$b9" -o "$dir/bad_metric.bin" \
+  --labels $labels --features cgal,cgal-metric
 expect_refusal "must be 1 to 32" "$tool" classify train "$b9" -o "$dir/bad_metric.bin" --labels $labels \
   --features cgal --cgal-scales 0
 [ ! -e "$dir/bad_metric.bin" ] || fail "a refused option wrote a model"

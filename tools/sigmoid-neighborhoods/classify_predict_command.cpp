@@ -31,8 +31,9 @@ void refuse_inexact_tile(const Classifier_settings& settings, double graphcut)
   const std::string groups = whole_set_groups(settings.features);
   if(!groups.empty())
     throw Usage_error("classify predict --tile: the model's feature group " + groups +
-                      " depends on the whole point set (CGAL's generator: scales from the average spacing, grids "
-                      "anchored at the bounding box), so a tile would not get the union's features; predict the "
+                      " depends on the whole point set (CGAL's generator anchors its grids at the bounding box; "
+                      "cgal takes its scales from the average spacing), so a tile would not get the union's "
+                      "features; predict the "
                       "union (--catalog without --tile) or use a model without it");
   if(graphcut > 0.)
     throw Usage_error("classify predict --tile: --graphcut minimises over the whole point set, so a tile would not "

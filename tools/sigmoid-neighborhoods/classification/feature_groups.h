@@ -48,7 +48,8 @@ inline void append_point_features(const std::vector<SN::Point_features>& feature
   }
 }
 
-// CGAL's generator on its own neighbor structures (it builds them), its features read back as columns.
+// CGAL's generator on its own neighbor structures (it builds them), its features read back as columns;
+// `voxel` its first scale in metres, 0: CGAL's choice from the spacing.
 inline void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scales, double voxel,
                                  std::vector<Feature_column>& columns)
 {
@@ -216,8 +217,8 @@ std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set
   for(const std::string& group : o.groups)
   {
     progress(group);
-    if(group == "cgal")
-      internal_classification::append_cgal_features(model, o.cgal_scales, o.cgal_voxel, columns);
+    if(group == "cgal" || group == "cgal-metric")
+      internal_classification::append_cgal_features(model, o.cgal_scales, group == "cgal" ? 0. : o.cgal_voxel, columns);
     else if(group == "k20" || group == "multiscale" || group == "multiscale-sigmoid")
     {
       const bool sigmoid = group == "multiscale-sigmoid";

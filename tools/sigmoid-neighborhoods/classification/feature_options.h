@@ -37,10 +37,11 @@ struct Feature_options
   std::vector<unsigned int> scales{10, 25, 50, 100};   // groups multiscale and multiscale-sigmoid
   double sigmoid_a = CGAL_PI / 6., sigmoid_b = CGAL_PI / 3.; // multiscale-sigmoid's weights
   std::vector<double> cell_sizes{2.5, 5., 10.};        // group height
-  unsigned int cgal_scales = 5;                        // group cgal
-  // group cgal: the voxel of its first grid in metres, doubled per scale; 0: CGAL's own choice, the
-  // mean range of each file's 12 nearest neighbors, which follows the file's density
-  double cgal_voxel = 0.;
+  unsigned int cgal_scales = 5;                        // groups cgal and cgal-metric
+  // group cgal-metric: the voxel of CGAL's first scale in metres, doubled per scale (the group cgal
+  // takes CGAL's own choice, the mean range of each file's 12 nearest neighbors, which follows the
+  // file's density: a model trained at one density reads other scales at another)
+  double cgal_voxel = 0.5;
   // groups pyramid and pyramid-sigmoid: cells of pyramid_cell * 2^l metres, l < pyramid_levels. A base
   // of 0.5 m is coarser than the spacing of airborne surveys of 4 points/m^2 and more (IGN LiDAR HD:
   // 10 or more, about 0.3 m), so that every level thins and its features do not depend on the density;
@@ -76,7 +77,10 @@ inline const char* const DEFAULT_FEATURE_GROUPS = "cgal,multiscale-sigmoid";
 inline const char* FEATURE_GROUPS_USAGE =
   "  --features GROUPS: comma-separated, in any combination (default cgal,multiscale-sigmoid: the best\n"
   "      in cross-validation at the training density and trained 4x thinner, benchmark/README.md):\n"
-  "      cgal            CGAL's Point_set_feature_generator on 5 scales (eigenvalues, heights, ...)\n"
+  "      cgal            CGAL's Point_set_feature_generator on 5 scales (eigenvalues, heights, ...), the\n"
+  "                      first from each file's spacing, as CGAL chooses it\n"
+  "      cgal-metric     the same on scales in metres: --cgal-voxel 0.5 m times 1, 2, 4 ... (a model\n"
+  "                      applies at another density)\n"
   "      k20             the eigen features (linearity ... normal_z) at k = 20, equal weights\n"
   "      eigenentropy    the same at the eigenentropy-optimal k of Weinmann et al., equal weights, and k\n"
   "      dimensionality  the same at the E_dim-optimal k, equal weights, and k\n"
@@ -93,9 +97,9 @@ inline const char* FEATURE_GROUPS_USAGE =
 
 inline const std::vector<std::string>& known_feature_groups()
 {
-  static const std::vector<std::string> groups{"cgal",     "k20",        "eigenentropy",       "dimensionality",
-                                               "optimal", "multiscale", "multiscale-sigmoid", "height",
-                                               "pyramid", "pyramid-sigmoid"};
+  static const std::vector<std::string> groups{"cgal",         "cgal-metric",        "k20",    "eigenentropy",
+                                               "dimensionality", "optimal",            "multiscale",
+                                               "multiscale-sigmoid", "height", "pyramid", "pyramid-sigmoid"};
   return groups;
 }
 
@@ -107,12 +111,15 @@ inline std::vector<std::string> parse_feature_groups(const std::string& text)
     const auto& known = known_feature_groups();
     if(std::find(known.begin(), known.end(), group) == known.end())
       throw Usage_error("--features: unknown group '" + group +
-                        "': expected cgal, k20, eigenentropy, dimensionality, optimal, multiscale, "
+                        "': expected cgal, cgal-metric, k20, eigenentropy, dimensionality, optimal, multiscale, "
                         "multiscale-sigmoid, height, pyramid or pyramid-sigmoid");
     if(std::find(groups.begin(), groups.end(), group) != groups.end())
       throw Usage_error("--features: group '" + group + "' given twice");
     groups.push_back(group);
   }
+  if(std::find(groups.begin(), groups.end(), "cgal") != groups.end() &&
+     std::find(groups.begin(), groups.end(), "cgal-metric") != groups.end())
+    throw Usage_error("--features: cgal and cgal-metric are the same features at other scales: give one of them");
   return groups;
 }
 
@@ -167,7 +174,8 @@ inline double cell_halo(const Feature_options& o, bool pyramid_guess = true)
 // any halo gets other values than the union: "" when there is none.
 inline std::string whole_set_groups(const Feature_options& o)
 {
-  return internal_classification::has_group(o, "cgal") ? "cgal" : "";
+  using internal_classification::has_group;
+  return has_group(o, "cgal") ? "cgal" : has_group(o, "cgal-metric") ? "cgal-metric" : "";
 }
 
 } // namespace sigmoid_tool
