@@ -9,7 +9,8 @@
 # this is what the default feature set of `classify train` is chosen on (benchmark/README.md).
 # usage: benchmark/classification_transfer_cv.sh TOOL OUT_DIR [SETS] [THINNING] [FEATURE OPTIONS...]
 #   OUT_DIR as given to classification_transfer.sh (its thinned tiles are reused); THINNING: random4;
-#   the feature options of classify experiment (e.g. --cgal-voxel 0.5) apply to every set
+#   the feature options of classify experiment (e.g. --cgal-voxel 0.5) apply to every set;
+#   CV_ORDERS=N: each fold in N feature orders (default 1), the fold's score their mean
 set -eu
 tool=$1
 out=$2
@@ -26,7 +27,7 @@ for left in $west; do
   train=$(for t in $west; do [ "$t" = "$left" ] || printf '%s,' "$out/tiles/$thinning/ign_lidarhd_$t.las"; done)
   mkdir -p "$out/cv_$thinning"
   "$tool" classify experiment -o "$folder" --train "${train%,}" --test "$labeled/ign_lidarhd_$left.las" \
-    --sets "$sets" --orders 1 --cv-orders 0 --graphcut 0 "$@" > "$folder.log" 2>&1 ||
+    --sets "$sets" --orders "${CV_ORDERS:-1}" --cv-orders 0 --graphcut 0 "$@" > "$folder.log" 2>&1 ||
     { echo "fold $left failed: $(tail -1 "$folder.log")"; exit 1; }
   echo "fold without $left done"
 done

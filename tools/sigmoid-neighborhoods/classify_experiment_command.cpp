@@ -40,12 +40,14 @@ namespace {
 // The feature sets of the experiment: what a CGAL user has (A), the fixed scale of pgeof and
 // jakteristics (B), the classical optimal neighborhoods (C, D), the package's (E), several scales
 // without and with sigmoid weights (F, F_sigmoid), and CGAL's with the package's added (G_*), the
-// last two of them the same ablation on top of CGAL's.
+// last two of them the same ablation on top of CGAL's; the scales in metres: the pyramid alone (P*)
+// and with CGAL's (H_*), and CGAL's generator on scales in metres (M*).
 const char* const DEFAULT_EXPERIMENT_SETS =
   "A=cgal;B=k20,height;C=eigenentropy,height;D=dimensionality,height;E=optimal,height;F=multiscale,height;"
   "F_sigmoid=multiscale-sigmoid,height;G_optimal=cgal,optimal;G_multiscale=cgal,multiscale;"
   "G_multiscale_sigmoid=cgal,multiscale-sigmoid;P=pyramid;P_sigmoid=pyramid-sigmoid;H_pyramid=cgal,pyramid;"
-  "H_pyramid_sigmoid=cgal,pyramid-sigmoid";
+  "H_pyramid_sigmoid=cgal,pyramid-sigmoid;M=cgal-metric;M_multiscale_sigmoid=cgal-metric,multiscale-sigmoid;"
+  "M_multiscale_sigmoid_pyramid=cgal-metric,multiscale-sigmoid,pyramid";
 
 struct Feature_set_spec
 {
