@@ -11,30 +11,20 @@ points whose code is in --labels, the IoU per class and their mean. With a predi
 same file, it is `classify evaluate`'s (a check). numpy and scikit-learn's KDTree only.
 """
 import argparse
-import struct
+import os
 import sys
 
 import numpy as np
 from sklearn.neighbors import KDTree
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import thin_las  # noqa: E402 (the LAS reader, beside this script)
+
 DEFAULT_LABELS = "ground=2,low_vegetation=3+4,high_vegetation=5,building=6"
 
 
 def read_las(path):
-    data = open(path, "rb").read()
-    if data[:4] != b"LASF" or data[104] & 0xC0:
-        sys.exit(path + ": not an uncompressed LAS file")
-    offset, = struct.unpack_from("<I", data, 96)
-    record, = struct.unpack_from("<H", data, 105)
-    count, = struct.unpack_from("<I", data, 107)
-    if data[25] == 4:
-        count = struct.unpack_from("<Q", data, 247)[0] or count
-    scale = np.array(struct.unpack_from("<3d", data, 131))
-    origin = np.array(struct.unpack_from("<3d", data, 155))
-    records = np.frombuffer(data, dtype=np.uint8, count=count * record, offset=offset).reshape(count, record)
-    xyz = records[:, :12].copy().view("<i4").astype(np.float64) * scale + origin
-    extended = (data[104] & 0x3F) >= 6
-    codes = records[:, 16].copy() if extended else records[:, 15] & 0x1F
+    _, _, xyz, codes = thin_las.read_las(path)
     return xyz, codes
 
 

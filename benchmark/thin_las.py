@@ -19,6 +19,26 @@ import sys
 import numpy as np
 
 
+def read_las(path):
+    """The file's bytes, its records (one row of bytes each), their coordinates and their
+    classification codes; exits on anything but an uncompressed LAS file."""
+    data = open(path, "rb").read()
+    if data[:4] != b"LASF" or data[104] & 0xC0:
+        sys.exit(path + ": not an uncompressed LAS file")
+    offset, = struct.unpack_from("<I", data, 96)
+    record, = struct.unpack_from("<H", data, 105)
+    count, = struct.unpack_from("<I", data, 107)
+    if data[25] == 4:
+        count = struct.unpack_from("<Q", data, 247)[0] or count
+    scale = np.array(struct.unpack_from("<3d", data, 131))
+    origin = np.array(struct.unpack_from("<3d", data, 155))
+    records = np.frombuffer(data, dtype=np.uint8, count=count * record, offset=offset).reshape(count, record)
+    xyz = records[:, :12].copy().view("<i4").astype(np.float64) * scale + origin
+    extended = (data[104] & 0x3F) >= 6
+    codes = records[:, 16].copy() if extended else records[:, 15] & 0x1F
+    return data, records, xyz, codes
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("input")
@@ -27,20 +47,10 @@ def main():
     parser.add_argument("--method", choices=["random", "voxel"], required=True)
     parser.add_argument("--seed", type=int, default=1)
     a = parser.parse_args()
-    data = open(a.input, "rb").read()
-    if data[:4] != b"LASF" or data[104] & 0xC0:
-        sys.exit(a.input + ": not an uncompressed LAS file")
+    data, records, xyz, _ = read_las(a.input)
     minor = data[25]
     offset, = struct.unpack_from("<I", data, 96)
-    record, = struct.unpack_from("<H", data, 105)
-    count, = struct.unpack_from("<I", data, 107)
-    if minor == 4:
-        count64, = struct.unpack_from("<Q", data, 247)
-        count = count64 or count
-    scale = np.array(struct.unpack_from("<3d", data, 131))
-    origin = np.array(struct.unpack_from("<3d", data, 155))
-    records = np.frombuffer(data, dtype=np.uint8, count=count * record, offset=offset).reshape(count, record)
-    xyz = records[:, :12].copy().view("<i4").astype(np.float64) * scale + origin
+    count = len(records)
 
     if a.method == "random":
         keep = np.random.default_rng(a.seed).random(count) < 1.0 / a.factor
