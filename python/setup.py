@@ -22,14 +22,17 @@ VERSION = re.search(r"project\(Sigmoid_neighborhoods VERSION ([0-9.]+)", (REPOSI
 # NPY_NUM_BUILD_JOBS=N compiles the translation units in parallel
 ParallelCompile("NPY_NUM_BUILD_JOBS").install()
 
-# The units, the longest first (CPU with -O3: about 32, 25, 20, 15, 12 and 4 s), so that two compilers
-# finish together: the kernels (src/Sigmoid_neighborhoods/core.cpp, CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE),
-# the one reader the module calls (src/read_oriented_point_set.cpp, CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO),
-# then the bindings.
-UNITS = ["src/read_oriented_point_set.cpp", "../src/Sigmoid_neighborhoods/core.cpp", "src/points.cpp",
-         "src/denoising.cpp", "src/features.cpp", "src/module.cpp"]
-assert sorted(UNITS) == sorted(["../src/Sigmoid_neighborhoods/core.cpp"] +
-                               [str(p.relative_to(HERE)) for p in (HERE / "src").glob("*.cpp")]), "a unit is missing"
+# The units, the longest first (CPU with -O3: about 29, 25, 20 and 16 s), so that two compilers finish
+# together: the one reader the module calls (src/read_oriented_point_set.cpp, compiled once:
+# CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO), the kernels (src/Sigmoid_neighborhoods/core.cpp, compiled once:
+# CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE), then the bindings, points.cpp, features.cpp and module.cpp in
+# one unit (src/points_features_module.cpp includes them).
+UNITS = ["src/read_oriented_point_set.cpp", "../src/Sigmoid_neighborhoods/core.cpp", "src/denoising.cpp",
+         "src/points_features_module.cpp"]
+INCLUDED = ["src/points.cpp", "src/features.cpp", "src/module.cpp"]
+assert sorted(UNITS + INCLUDED) == sorted(["../src/Sigmoid_neighborhoods/core.cpp"] +
+                                          [str(p.relative_to(HERE)) for p in (HERE / "src").glob("*.cpp")]), \
+    "a file of src/ is neither a unit nor included by one"
 
 
 class build_ext_in_order(build_ext):
@@ -52,6 +55,7 @@ class build_ext_in_order(build_ext):
 core = Pybind11Extension(
     "sigmoid_neighborhoods._core",
     UNITS,
+    depends=INCLUDED,  # a change to one of them rebuilds the module
     include_dirs=[str(REPOSITORY / "include"), "/usr/include/eigen3"],
     define_macros=[("NDEBUG", None), ("CGAL_EIGEN3_ENABLED", None), ("CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO", None),
                    ("CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE", None), ("SIGMOID_NEIGHBORHOODS_VERSION", f'"{VERSION}"')],
