@@ -22,11 +22,12 @@ VERSION = re.search(r"project\(Sigmoid_neighborhoods VERSION ([0-9.]+)", (REPOSI
 # NPY_NUM_BUILD_JOBS=N compiles the translation units in parallel
 ParallelCompile("NPY_NUM_BUILD_JOBS").install()
 
-# The units, the longest first (CPU with -O3: about 29, 25, 20 and 16 s), so that two compilers finish
-# together: the one reader the module calls (src/read_oriented_point_set.cpp, compiled once:
-# CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO), the kernels (src/Sigmoid_neighborhoods/core.cpp, compiled once:
-# CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE), then the bindings, points.cpp, features.cpp and module.cpp in
-# one unit (src/points_features_module.cpp includes them).
+# The units, the longest first (CPU with -O3: about 30, 25 to 30, 20 and 15 s), so that two compilers
+# finish together (the first free takes denoising.cpp, the other the last unit): the one reader the
+# module calls (src/read_oriented_point_set.cpp, compiled once: CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO),
+# the kernels (src/Sigmoid_neighborhoods/core.cpp, compiled once: CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE),
+# then the bindings: denoising.cpp, and points.cpp, features.cpp and module.cpp in one unit
+# (src/points_features_module.cpp includes them).
 UNITS = ["src/read_oriented_point_set.cpp", "../src/Sigmoid_neighborhoods/core.cpp", "src/denoising.cpp",
          "src/points_features_module.cpp"]
 INCLUDED = ["src/points.cpp", "src/features.cpp", "src/module.cpp"]
