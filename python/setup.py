@@ -22,16 +22,41 @@ VERSION = re.search(r"project\(Sigmoid_neighborhoods VERSION ([0-9.]+)", (REPOSI
 # NPY_NUM_BUILD_JOBS=N compiles the translation units in parallel
 ParallelCompile("NPY_NUM_BUILD_JOBS").install()
 
-LONGEST_FIRST = ["../src/Sigmoid_neighborhoods/IO.cpp", "../src/Sigmoid_neighborhoods/core.cpp", "src/denoising.cpp",
-                 "src/points.cpp"]
-UNITS = LONGEST_FIRST + sorted(
-    name for name in (str(p.relative_to(HERE)) for p in (HERE / "src").glob("*.cpp")) if name not in LONGEST_FIRST)
+# The units, the longest first (CPU with -O3: about 30, 25 to 30, 20 and 15 s), so that two compilers
+# finish together (the first free takes denoising.cpp, the other the last unit): the one reader the
+# module calls (src/read_oriented_point_set.cpp, compiled once: CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO),
+# the kernels (src/Sigmoid_neighborhoods/core.cpp, compiled once: CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE),
+# then the bindings: denoising.cpp, and points.cpp, features.cpp and module.cpp in one unit
+# (src/points_features_module.cpp includes them).
+UNITS = ["src/read_oriented_point_set.cpp", "../src/Sigmoid_neighborhoods/core.cpp", "src/denoising.cpp",
+         "src/points_features_module.cpp"]
+INCLUDED = ["src/points.cpp", "src/features.cpp", "src/module.cpp"]
+assert sorted(UNITS + INCLUDED) == sorted(["../src/Sigmoid_neighborhoods/core.cpp"] +
+                                          [str(p.relative_to(HERE)) for p in (HERE / "src").glob("*.cpp")]), \
+    "a file of src/ is neither a unit nor included by one"
+
+
+class build_ext_in_order(build_ext):
+    """setuptools sorts an extension's sources by name (reproducible objects); this compiles them in
+    the order of UNITS instead (the objects are the same, linked in that order)."""
+
+    def build_extension(self, ext):
+        compile_sorted = self.compiler.compile
+
+        def compile_in_order(sources, *args, **kwargs):
+            return compile_sorted(sorted(sources, key=UNITS.index), *args, **kwargs)
+
+        self.compiler.compile = compile_in_order
+        try:
+            super().build_extension(ext)
+        finally:
+            del self.compiler.compile
+
 
 core = Pybind11Extension(
     "sigmoid_neighborhoods._core",
-    # the readers and the kernels, compiled once (CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO and _CORE), then
-    # the module's units, the longest first (44, 25, 20 and 15 s with -O3): two compilers finish together
     UNITS,
+    depends=INCLUDED,  # a change to one of them rebuilds the module
     include_dirs=[str(REPOSITORY / "include"), "/usr/include/eigen3"],
     define_macros=[("NDEBUG", None), ("CGAL_EIGEN3_ENABLED", None), ("CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO", None),
                    ("CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE", None), ("SIGMOID_NEIGHBORHOODS_VERSION", f'"{VERSION}"')],
@@ -51,7 +76,7 @@ setup(
     packages=["sigmoid_neighborhoods"],
     package_data={"sigmoid_neighborhoods": ["__init__.pyi", "py.typed"]},
     ext_modules=[core],
-    cmdclass={"build_ext": build_ext},
+    cmdclass={"build_ext": build_ext_in_order},
     python_requires=">=3.9",
     install_requires=["numpy"],
     zip_safe=False,

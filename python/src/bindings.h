@@ -1,7 +1,8 @@
 // Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The module's functions, in three translation units (CGAL's templates compile slowly).
+// The module's functions, in three files (CGAL's templates compile slowly), compiled as two units:
+// denoising.cpp, and points.cpp with features.cpp and module.cpp (points_features_module.cpp).
 
 #ifndef SIGMOID_NEIGHBORHOODS_PYTHON_BINDINGS_H
 #define SIGMOID_NEIGHBORHOODS_PYTHON_BINDINGS_H

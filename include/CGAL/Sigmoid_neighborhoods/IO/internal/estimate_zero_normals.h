@@ -10,7 +10,7 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/Normal_options.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/estimate_normals.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/normal_fitting.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/pca_normal.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Oriented_points.h>
 
