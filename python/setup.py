@@ -24,14 +24,15 @@ ParallelCompile("NPY_NUM_BUILD_JOBS").install()
 
 # The units, the longest first (CPU with -O3: about 30, 25 to 30, 20 and 15 s), so that two compilers
 # finish together (the first free takes denoising.cpp, the other the last unit): the one reader the
-# module calls (src/read_oriented_point_set.cpp, compiled once: CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO),
+# module calls (../src/Sigmoid_neighborhoods/read_oriented_point_set.cpp, the point-set reader of IO.cpp alone,
+# compiled once: CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO),
 # the kernels (src/Sigmoid_neighborhoods/core.cpp, compiled once: CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE),
 # then the bindings: denoising.cpp, and points.cpp, features.cpp and module.cpp in one unit
 # (src/points_features_module.cpp includes them).
-UNITS = ["src/read_oriented_point_set.cpp", "../src/Sigmoid_neighborhoods/core.cpp", "src/denoising.cpp",
-         "src/points_features_module.cpp"]
+UNITS = ["../src/Sigmoid_neighborhoods/read_oriented_point_set.cpp", "../src/Sigmoid_neighborhoods/core.cpp",
+         "src/denoising.cpp", "src/points_features_module.cpp"]
 INCLUDED = ["src/points.cpp", "src/features.cpp", "src/module.cpp"]
-assert sorted(UNITS + INCLUDED) == sorted(["../src/Sigmoid_neighborhoods/core.cpp"] +
+assert sorted(UNITS + INCLUDED) == sorted(UNITS[:2] +
                                           [str(p.relative_to(HERE)) for p in (HERE / "src").glob("*.cpp")]), \
     "a file of src/ is neither a unit nor included by one"
 
