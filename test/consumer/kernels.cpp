@@ -42,7 +42,8 @@ int main()
   std::vector<std::uint32_t> indices;
   std::vector<std::size_t> offsets;
   SN::compute_k_nearest_neighbors<SN::Parallel_if_available_tag>(points, 20, indices, offsets, maps);
-  const auto rows = SN::parameters::neighbor_indices(std::cref(indices), SN::parameters::neighbor_offsets(std::cref(offsets), maps));
+  const auto rows =
+    SN::parameters::neighbor_indices(std::cref(indices), SN::parameters::neighbor_offsets(std::cref(offsets), maps));
   SN::estimate_normals<SN::Parallel_if_available_tag>(points, 12, rows);
   SN::orient_normals_by_spanning_forest<SN::Parallel_if_available_tag>(points, 12, rows);
   std::vector<SN::Optimal_sigmoid_neighborhood> optimal;

@@ -29,8 +29,8 @@ const char* const CLASSIFY_USAGE =
   "usage: sigmoid-neighborhoods classify train FILE... -o MODEL [--labels MAP] [--features GROUPS]\n"
   "                                [--trees 25] [--depth 20] [--feature-order-seed N] [--max-per-class N]\n"
   "                                [--pyramid-cell 0.5] [--pyramid-levels 5] [--pyramid-sigmoid-cells C,...]\n"
-  "                                [--sigmoid 30deg,60deg]"
-  " [--cgal-voxel S] [--cgal-scales 5] [normals] [--threads N]\n"
+  "                                [--sigmoid 30deg,60deg] [--cgal-voxel 0.5] [--cgal-scales 5] [normals]\n"
+  "                                [--threads N]\n"
   "       sigmoid-neighborhoods classify predict MODEL INPUT|--catalog SOURCE [--tile NAME] -o OUT.ply\n"
   "                                [--graphcut STRENGTH] [--threads N]\n"
   "       sigmoid-neighborhoods classify evaluate MODEL FILE... -o DIR [--graphcut STRENGTH] [--threads N]\n"
@@ -99,9 +99,11 @@ Feature_options read_feature_options(const Arguments& args)
       char* end = nullptr;
       const double cell = std::strtod(item.c_str(), &end);
       if(item.empty() || *end != '\0' || std::find(cells.begin(), cells.end(), cell) == cells.end())
-        throw Usage_error("--pyramid-sigmoid-cells: '" + item + "' is not a cell size of the pyramid (--pyramid-cell x 2^l)");
-      if(std::find(o.pyramid_sigmoid_cells.begin(), o.pyramid_sigmoid_cells.end(), cell) == o.pyramid_sigmoid_cells.end())
-        o.pyramid_sigmoid_cells.push_back(cell);
+        throw Usage_error("--pyramid-sigmoid-cells: '" + item +
+                          "' is not a cell size of the pyramid (--pyramid-cell x 2^l)");
+      std::vector<double>& chosen = o.pyramid_sigmoid_cells;
+      if(std::find(chosen.begin(), chosen.end(), cell) == chosen.end())
+        chosen.push_back(cell);
     }
   }
   if(args.has("--cgal-voxel"))

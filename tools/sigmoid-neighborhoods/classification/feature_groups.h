@@ -297,9 +297,8 @@ std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set
         at_level.reserve(per_point.size());
         for(const auto& p : per_point)
           at_level.push_back(p[c]);
-        const bool with_weights = c < weighted.size();
-        append_point_features(at_level, shape,
-                              (with_weights ? "_sigmoid" : "") + internal_classification::pyramid_suffix(cells[order[c]]),
+        const std::string weights_name = c < weighted.size() ? "_sigmoid" : "";
+        append_point_features(at_level, shape, weights_name + internal_classification::pyramid_suffix(cells[order[c]]),
                               columns);
       }
       // the heights in the levels' cells, once when both groups are given

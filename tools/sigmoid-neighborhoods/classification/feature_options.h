@@ -72,11 +72,11 @@ struct Feature_options
 // classify train's groups without --features: the set that the cross-validation on the training
 // tiles picks, at their density and trained on them thinned 4x (the worse of the two: a set must hold
 // at both), among the manual's sets (benchmark/README.md, "Classification across densities").
-inline const char* const DEFAULT_FEATURE_GROUPS = "cgal,multiscale-sigmoid";
+inline const char* const DEFAULT_FEATURE_GROUPS = "cgal-metric,multiscale-sigmoid,pyramid";
 
 inline const char* FEATURE_GROUPS_USAGE =
-  "  --features GROUPS: comma-separated, in any combination (default cgal,multiscale-sigmoid: the best\n"
-  "      in cross-validation at the training density and trained 4x thinner, benchmark/README.md):\n"
+  "  --features GROUPS: comma-separated, in any combination (default cgal-metric,multiscale-sigmoid,pyramid:\n"
+  "      the best in cross-validation at the training density and trained 4x thinner, benchmark/README.md):\n"
   "      cgal            CGAL's Point_set_feature_generator on 5 scales (eigenvalues, heights, ...), the\n"
   "                      first from each file's spacing, as CGAL chooses it\n"
   "      cgal-metric     the same on scales in metres: --cgal-voxel 0.5 m times 1, 2, 4 ... (a model\n"
