@@ -62,6 +62,9 @@ done
   fail "not two scales of CGAL's eigenvalues: $(echo "$header" | grep -o '"eigenvalue[a-z_0-9]*"' | sort -u | tr '\n' ' ')"
 "$tool" classify predict "$dir/metric.bin" "$b9" -o "$dir/metric.ply" 2> "$dir/metric_predict.txt" ||
   fail "predict with --cgal-voxel: $(cat "$dir/metric_predict.txt")"
+{ head -1 "$dir/metric.bin"; sed -n 2p "$dir/metric.bin" | sed 's/"cgal_voxel":0.5/"cgal_voxel":0.0/'; tail -n +3 "$dir/metric.bin"; } \
+  > "$dir/forged_voxel.bin"
+expect_refusal "not a usable classifier model" "$tool" classify predict "$dir/forged_voxel.bin" "$b9" -o "$dir/none.ply"
 # the voxel is read: another one, other features, another forest (the same seed and settings otherwise)
 for voxel in 0.5 1; do
   "$tool" classify train "$b9" -o "$dir/voxel$voxel.bin" --labels $labels --features cgal-metric --cgal-scales 2 \

@@ -87,7 +87,7 @@ inline Classifier_settings settings_from_json(const nlohmann::json& j, const std
     const std::vector<double> sigmoid = f.at("sigmoid").get<std::vector<double>>();
     s.features.cell_sizes = f.at("cell_sizes").get<std::vector<double>>();
     s.features.cgal_scales = f.at("cgal_scales").get<unsigned int>();
-    if(f.contains("cgal_voxel")) // models written before it have none: CGAL's own choice
+    if(f.contains("cgal_voxel")) // models written before it have none (nor the group cgal-metric)
       s.features.cgal_voxel = f.at("cgal_voxel").get<double>();
     if(sigmoid.size() != 2 || !(sigmoid[0] >= 0. && sigmoid[0] <= sigmoid[1] && sigmoid[1] <= CGAL_PI))
       throw bad("the sigmoid is not 0 <= a <= b <= pi");
@@ -97,7 +97,7 @@ inline Classifier_settings settings_from_json(const nlohmann::json& j, const std
     if(s.features.fixed_k < 1 || s.features.fixed_k > largest_k || s.features.k_min < 1 ||
        s.features.k_min > s.features.k_max || s.features.k_max > largest_k || s.features.scales.empty() ||
        s.features.scales.size() > 64 || s.features.cell_sizes.empty() || s.features.cell_sizes.size() > 64 ||
-       s.features.cgal_scales < 1 || s.features.cgal_scales > 32 || !(s.features.cgal_voxel >= 0.) ||
+       s.features.cgal_scales < 1 || s.features.cgal_scales > 32 || !(s.features.cgal_voxel > 0.) ||
        !std::isfinite(s.features.cgal_voxel))
       throw bad("feature settings out of range");
     for(unsigned int k : s.features.scales)
