@@ -57,7 +57,7 @@ for piece in '"cgal_scales":2' '"cgal_voxel":0.5' '"sigmoid_cells":\[2.0,1.0\]' 
   echo "$header" | grep -q "$piece" || fail "no $piece in the model: $(echo "$header" | head -c 600)"
 done
 ! echo "$header" | grep -q '"linearity_sigmoid_pyr4"\|"linearity_pyr1"' || fail "a level with both weights or none"
-# two scales of CGAL's features: fewer than its five (the 2 x 10 eigen features and the 3 x 3 heights of the pyramid besides)
+# two scales of CGAL's features, not its five: two names per eigenvalue (scale 0 and 1)
 [ "$(echo "$header" | grep -o '"eigenvalue[a-z_]*0_[0-9]*"' | sort -u | wc -l)" -eq 2 ] ||
   fail "not two scales of CGAL's eigenvalues: $(echo "$header" | grep -o '"eigenvalue[a-z_0-9]*"' | sort -u | tr '\n' ' ')"
 "$tool" classify predict "$dir/metric.bin" "$b9" -o "$dir/metric.ply" 2> "$dir/metric_predict.txt" ||
