@@ -2,9 +2,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The features a classifier takes (Point_features, Height_features) on analytic neighborhoods,
-// their equality with the search's records, and their entry into CGAL's Classification package.
+// their equality with the search's records, their entry into CGAL's Classification package, and the
+// tool's build of CGAL's own generator (its scales side by side) against the generator.
 
 #include "test_models.h"
+#include "classification/cgal_features.h"
 
 #include <CGAL/Sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/Classification/add_point_features.h>
@@ -13,6 +15,8 @@
 #include <CGAL/Classification/ETHZ/Random_forest_classifier.h>
 #include <CGAL/Classification/Label_set.h>
 #include <CGAL/Classification/classify.h>
+#include <CGAL/Classification/Point_set_feature_generator.h>
+#include <CGAL/Point_set_3.h>
 #include <CGAL/property_map.h>
 
 #include <catch2/catch.hpp>
@@ -269,4 +273,62 @@ TEST_CASE("point features enter a CGAL Feature_set and train CGAL's random fores
   for(std::size_t i = 0; i < points.size(); ++i)
     correct += predicted[i] == truth[i];
   CHECK(correct >= points.size() * 98 / 100);
+}
+
+TEST_CASE("the groups cgal, cgal-metric and cgal-grid: CGAL's generator bit for bit, on any thread count",
+          "[classification][cgal]")
+{
+  typedef SN::Oriented_point_set::Kernel Kernel;
+  typedef CGAL::Point_set_3<Kernel::Point_3> Point_set;
+  auto same_value = [](double column, float feature) {
+    return column == double(feature) || (std::isnan(column) && std::isnan(feature));
+  };
+  SN::Oriented_point_set model;
+  for(const auto& p : scene(11))
+    model.points.emplace_back(p.first.x(), p.first.y(), p.first.z());
+  Point_set points;
+  for(const auto& p : model.points)
+    points.insert(p);
+
+  for(const double voxel : {0., 0.4})
+  {
+    CGAL::Classification::Point_set_feature_generator<Kernel, Point_set, Point_set::Point_map, CGAL::Sequential_tag>
+      generator(points, points.point_map(), 3, voxel > 0. ? float(voxel) : -1.f);
+    CGAL::Classification::Feature_set expected;
+    generator.generate_point_based_features(expected);
+    REQUIRE(expected.size() == 3 * 10);
+    for(const unsigned int threads : {1u, 2u, 3u})
+    {
+      std::vector<sigmoid_tool::Feature_column> columns;
+      sigmoid_tool::append_cgal_features(model, 3, voxel, threads, columns);
+      REQUIRE(columns.size() == expected.size());
+      std::size_t equal = 0;
+      for(std::size_t f = 0; f < columns.size(); ++f)
+      {
+        CHECK(columns[f].name == expected[f]->name());
+        for(std::size_t i = 0; i < points.size(); ++i)
+          equal += same_value(columns[f].values[i], expected[f]->value(i));
+      }
+      CHECK(equal == columns.size() * points.size());
+    }
+    if(voxel == 0.)
+      continue;
+    // the grids' features alone: the generator's columns of those names, equal
+    std::vector<sigmoid_tool::Feature_column> grid;
+    sigmoid_tool::append_cgal_features(model, 3, voxel, 2, grid, true);
+    REQUIRE(grid.size() == 3 * 5);
+    CHECK(grid.front().name == "vertical_dispersion_0");
+    CHECK(grid.back().name == "vertical_range_2");
+    for(const auto& c : grid)
+    {
+      std::size_t f = 0;
+      while(f < expected.size() && expected[f]->name() != c.name)
+        ++f;
+      REQUIRE(f < expected.size());
+      std::size_t equal = 0;
+      for(std::size_t i = 0; i < points.size(); ++i)
+        equal += same_value(c.values[i], expected[f]->value(i));
+      CHECK(equal == points.size());
+    }
+  }
 }

@@ -76,8 +76,35 @@ expect_refusal "not a cell size of the pyramid" "$tool" classify train "$b9" -o 
   --features pyramid-sigmoid --pyramid-cell 1 --pyramid-sigmoid-cells 3
 expect_refusal "must be a positive voxel size" "$tool" classify train "$b9" -o "$dir/bad_metric.bin" --labels $labels \
   --features cgal-metric --cgal-voxel 0
-expect_refusal "cgal and cgal-metric are the same features" "$tool" classify train "$b9" -o "$dir/bad_metric.bin" \
-  --labels $labels --features cgal,cgal-metric
+expect_refusal "cgal, cgal-metric and cgal-grid share CGAL's features" "$tool" classify train "$b9" \
+  -o "$dir/bad_metric.bin" --labels $labels --features cgal,cgal-metric
+expect_refusal "cgal, cgal-metric and cgal-grid share CGAL's features" "$tool" classify train "$b9" \
+  -o "$dir/bad_metric.bin" --labels $labels --features cgal-grid,cgal-metric
+
+# cgal-grid: the grids' features of cgal-metric alone (no eigen analysis), at the model's voxel and scales
+"$tool" classify train "$b9" -o "$dir/grid.bin" --labels $labels --features cgal-grid,k20 --cgal-voxel 1 \
+  --cgal-scales 2 --trees 2 2> "$dir/grid.txt" || fail "train cgal-grid: $(cat "$dir/grid.txt")"
+grep -q "grid.bin: 20 features" "$dir/grid.txt" || fail "cgal-grid: not 2 x 5 grid features and k20's: $(cat "$dir/grid.txt")"
+header=$(sed -n 2p "$dir/grid.bin")
+for piece in '"cgal_voxel":1.0' '"cgal_scales":2' '"elevation_1"' '"vertical_dispersion_0"' '"vertical_range_1"'; do
+  echo "$header" | grep -q "$piece" || fail "no $piece in the cgal-grid model: $(echo "$header" | head -c 600)"
+done
+! echo "$header" | grep -q '"eigenvalue\|"distance_to_plane\|"verticality_[0-9]' || fail "cgal-grid has eigen features"
+"$tool" classify predict "$dir/grid.bin" "$b9" -o "$dir/grid.ply" 2> "$dir/grid_predict.txt" ||
+  fail "predict with cgal-grid: $(cat "$dir/grid_predict.txt")"
+
+# --scales: the neighbor counts of multiscale(-sigmoid), sorted, stored and named in the model
+"$tool" classify train "$b9" -o "$dir/scales.bin" --labels $labels --features multiscale-sigmoid --scales 30,12,30 \
+  --trees 2 2> "$dir/scales.txt" || fail "train --scales: $(cat "$dir/scales.txt")"
+header=$(sed -n 2p "$dir/scales.bin")
+for piece in '"scales":\[12,30\]' '"linearity_sigmoid_k12"' '"normal_z_sigmoid_k30"'; do
+  echo "$header" | grep -q "$piece" || fail "no $piece in the --scales model: $(echo "$header" | head -c 600)"
+done
+! echo "$header" | grep -q '"linearity_sigmoid_k10"' || fail "--scales kept the default scales"
+for bad in 0 10,x 10,-5 10001; do
+  expect_refusal "is not a neighbor count of 1 to 10000" "$tool" classify train "$b9" -o "$dir/bad_scales.bin" \
+    --labels $labels --features multiscale --scales "$bad"
+done
 expect_refusal "must be 1 to 32" "$tool" classify train "$b9" -o "$dir/bad_metric.bin" --labels $labels \
   --features cgal --cgal-scales 0
 [ ! -e "$dir/bad_metric.bin" ] || fail "a refused option wrote a model"

@@ -29,8 +29,8 @@ const char* const CLASSIFY_USAGE =
   "usage: sigmoid-neighborhoods classify train FILE... -o MODEL [--labels MAP] [--features GROUPS]\n"
   "                                [--trees 25] [--depth 20] [--feature-order-seed N] [--max-per-class N]\n"
   "                                [--pyramid-cell 0.5] [--pyramid-levels 5] [--pyramid-sigmoid-cells C,...]\n"
-  "                                [--sigmoid 30deg,60deg] [--cgal-voxel 0.5] [--cgal-scales 5] [normals]\n"
-  "                                [--threads N]\n"
+  "                                [--sigmoid 30deg,60deg] [--scales 10,25,50,100] [--cgal-voxel 0.5]\n"
+  "                                [--cgal-scales 5] [normals] [--threads N]\n"
   "       sigmoid-neighborhoods classify predict MODEL INPUT|--catalog SOURCE [--tile NAME] -o OUT.ply\n"
   "                                [--graphcut STRENGTH] [--threads N]\n"
   "       sigmoid-neighborhoods classify evaluate MODEL FILE... -o DIR [--graphcut STRENGTH] [--threads N]\n"
@@ -41,8 +41,11 @@ const char* const CLASSIFY_USAGE =
   "  --labels MAP: the classes and their codes, other codes ignored (default ground=2,low_vegetation=3+4,\n"
   "      high_vegetation=5,building=6)\n"
   "  --feature-order-seed N: the features in a shuffled order (CGAL's forest depends on it; 0: as listed)\n"
-  "  --cgal-voxel S: the voxel of the group cgal-metric's first scale in metres, doubled per scale, stored\n"
-  "      in the model (default 0.5); --cgal-scales N: the number of scales of cgal and cgal-metric (5)\n"
+  "  --cgal-voxel S: the voxel of the groups cgal-metric and cgal-grid's first scale in metres, doubled per\n"
+  "      scale, stored in the model (default 0.5); --cgal-scales N: the number of scales of cgal,\n"
+  "      cgal-metric and cgal-grid (5)\n"
+  "  --scales K,...: the neighbor counts of the groups multiscale and multiscale-sigmoid (10,25,50,100),\n"
+  "      stored in the model\n"
   "  --max-per-class N: train on at most N points of each class, evenly spaced in the files' order (0: all)\n"
   "  training runs its trees in parallel on TBB when the build has it: the same forest for any --threads\n"
   "  --graphcut STRENGTH: CGAL's graph-cut regularisation of the labels on 12 neighbors (e.g. 0.2)\n"
@@ -53,7 +56,7 @@ const char* const CLASSIFY_USAGE =
   "      groups, the neighbors of their normals and, for the group height, every cell of the tile (for the\n"
   "      pyramid groups, one checked to hold each level's representatives and rows near the tile): their labels\n"
   "      and confidences are those of the union, bit for bit (orientation mst excepted); refused with --tile:\n"
-  "      the groups cgal and cgal-metric (CGAL's generator anchors its grids at the bounding box of the whole\n"
+  "      the groups cgal, cgal-metric and cgal-grid (CGAL's grids are anchored at the bounding box of the whole\n"
   "      point set; cgal takes its scales from the average spacing) and --graphcut (a minimisation over the\n"
   "      whole point set): predict the union for those\n"
   "  evaluate writes DIR/evaluation.md, .csv, .json: confusion matrix, precision, recall, F1, IoU per\n"
@@ -67,7 +70,7 @@ const char* const CLASSIFY_USAGE =
 std::vector<std::string> with_feature_options(std::vector<std::string> valued)
 {
   for(const char* option : {"--threads", "--sigmoid", "--pyramid-cell", "--pyramid-levels", "--pyramid-sigmoid-cells",
-                            "--cgal-voxel", "--cgal-scales"})
+                            "--cgal-voxel", "--cgal-scales", "--scales"})
     valued.push_back(option);
   return valued;
 }
@@ -111,6 +114,21 @@ Feature_options read_feature_options(const Arguments& args)
     o.cgal_voxel = args.get_double("--cgal-voxel", 0.);
     if(!(o.cgal_voxel > 0.) || !std::isfinite(o.cgal_voxel))
       throw Usage_error("--cgal-voxel must be a positive voxel size in metres");
+  }
+  if(args.has("--scales"))
+  {
+    // ascending and distinct: the columns are named by k
+    o.scales.clear();
+    for(const std::string& item : split(args.get("--scales"), ','))
+    {
+      char* end = nullptr;
+      const unsigned long k = std::strtoul(item.c_str(), &end, 10);
+      if(item.empty() || item[0] == '-' || *end != '\0' || k < 1 || k > 10000)
+        throw Usage_error("--scales: '" + item + "' is not a neighbor count of 1 to 10000");
+      o.scales.push_back(static_cast<unsigned int>(k));
+    }
+    std::sort(o.scales.begin(), o.scales.end());
+    o.scales.erase(std::unique(o.scales.begin(), o.scales.end()), o.scales.end());
   }
   o.cgal_scales = args.get_unsigned("--cgal-scales", o.cgal_scales);
   if(o.cgal_scales < 1 || o.cgal_scales > 32)

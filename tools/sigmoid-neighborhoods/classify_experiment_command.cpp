@@ -316,7 +316,8 @@ void write_experiment(const std::string& dir, const std::vector<Feature_set_spec
         << " feature orders (the forest depends on the order): mean IoU as mean [min, max]; the other scores are "
            "means. Graph-cut: CGAL's classify_with_graphcut, strength "
         << number_fixed(graphcut, 2) << ", 12 neighbors. Times: features of all files, training and "
-           "classification (one order).\n\n"
+           "classification (one order); the features' time leaves out the reading, the normals and the "
+           "neighbor rows that every set shares (benchmark/classification_speed.sh times a whole prediction).\n\n"
         << "| set | groups | graph-cut | features | mean IoU | OA | mean F1 |";
     for(const std::string& name : m.names)
       out << " IoU " << name << " |";

@@ -21,7 +21,6 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -46,15 +45,83 @@ namespace internal {
 
 typedef std::array<std::int64_t, 3> Voxel;
 
-struct Voxel_hash
+// The non-empty cells and a point index each, in one flat array probed linearly: the nearest-
+// representative pass looks up about 27 cells per point, where std::unordered_map's chasing of nodes
+// took half of a pyramid's time.
+class Voxel_table
 {
-  std::size_t operator()(const Voxel& v) const
+public:
+  static constexpr std::uint32_t EMPTY = 0xFFFFFFFFu; // no point index (there are fewer than 2^32 - 1)
+
+  Voxel_table() { rehash(16); }
+
+  // the value of cell v, `value` inserted when v is new; the reference is valid until the next insertion
+  std::uint32_t& find_or_insert(const Voxel& v, std::uint32_t value)
   {
-    std::uint64_t h = std::uint64_t(v[0]);
-    h = h * 0x9E3779B97F4A7C15ull ^ std::uint64_t(v[1]);
-    h = h * 0x9E3779B97F4A7C15ull ^ std::uint64_t(v[2]);
-    return std::size_t(h ^ (h >> 29));
+    if(2 * (m_size + 1) > m_keys.size())
+      rehash(2 * m_keys.size());
+    std::size_t s = slot(v);
+    for(; m_values[s] != EMPTY; s = (s + 1) & m_mask)
+      if(m_keys[s] == v)
+        return m_values[s];
+    m_keys[s] = v;
+    m_values[s] = value;
+    ++m_size;
+    return m_values[s];
   }
+
+  // the value of cell v, EMPTY when v is empty
+  std::uint32_t find(const Voxel& v) const
+  {
+    for(std::size_t s = slot(v); m_values[s] != EMPTY; s = (s + 1) & m_mask)
+      if(m_keys[s] == v)
+        return m_values[s];
+    return EMPTY;
+  }
+
+  // the values, in no particular order
+  template <typename Function>
+  void for_each_value(const Function& f) const
+  {
+    for(std::uint32_t value : m_values)
+      if(value != EMPTY)
+        f(value);
+  }
+
+private:
+  std::size_t slot(const Voxel& v) const
+  {
+    std::uint64_t h = std::uint64_t(v[0]) * 0x9E3779B97F4A7C15ull;
+    h = (h ^ std::uint64_t(v[1])) * 0xC2B2AE3D27D4EB4Full;
+    h = (h ^ std::uint64_t(v[2])) * 0x9E3779B97F4A7C15ull;
+    return std::size_t(h >> m_shift); // the high bits, the best mixed
+  }
+
+  void rehash(std::size_t capacity)
+  {
+    std::vector<Voxel> keys(capacity);
+    std::vector<std::uint32_t> values(capacity, EMPTY);
+    keys.swap(m_keys);
+    values.swap(m_values);
+    m_mask = capacity - 1;
+    m_shift = 64;
+    for(std::size_t c = capacity; c > 1; c /= 2)
+      --m_shift;
+    for(std::size_t s = 0; s < keys.size(); ++s)
+      if(values[s] != EMPTY)
+      {
+        std::size_t t = slot(keys[s]);
+        while(m_values[t] != EMPTY)
+          t = (t + 1) & m_mask;
+        m_keys[t] = keys[s];
+        m_values[t] = values[s];
+      }
+  }
+
+  std::vector<Voxel> m_keys;
+  std::vector<std::uint32_t> m_values;
+  std::size_t m_size = 0, m_mask = 0;
+  int m_shift = 64;
 };
 
 inline Voxel voxel_of(const Double_point& p, double cell_size, std::size_t i)
@@ -125,13 +192,11 @@ thin_on_voxel_grid(const PointRange& points, double cell_size, const CGAL_NP_CLA
     voxels[i] = internal::voxel_of(copy[i], cell_size, i);
 
   // each cell's point nearest to its centre; visited in index order, so a tie keeps the smaller index
-  std::unordered_map<internal::Voxel, std::uint32_t, internal::Voxel_hash> chosen;
-  chosen.reserve(n);
+  internal::Voxel_table chosen;
   for(std::size_t i = 0; i < n; ++i)
   {
-    const auto inserted = chosen.emplace(voxels[i], std::uint32_t(i));
-    std::uint32_t& best = inserted.first->second;
-    if(!inserted.second && internal::squared_distance_to_centre(copy[i], voxels[i], cell_size) <
+    std::uint32_t& best = chosen.find_or_insert(voxels[i], std::uint32_t(i));
+    if(best != i && internal::squared_distance_to_centre(copy[i], voxels[i], cell_size) <
                              internal::squared_distance_to_centre(copy[best], voxels[best], cell_size))
       best = std::uint32_t(i);
   }
@@ -139,8 +204,7 @@ thin_on_voxel_grid(const PointRange& points, double cell_size, const CGAL_NP_CLA
   result.cell_size = cell_size;
   std::vector<std::uint32_t> position(n, 0); // of each representative in `representatives`
   std::vector<bool> is_representative(n, false);
-  for(const auto& c : chosen)
-    is_representative[c.second] = true;
+  chosen.for_each_value([&](std::uint32_t i) { is_representative[i] = true; });
   for(std::size_t i = 0; i < n; ++i)
     if(is_representative[i])
     {
@@ -158,7 +222,7 @@ thin_on_voxel_grid(const PointRange& points, double cell_size, const CGAL_NP_CLA
     [&](std::size_t i, int&) {
       const internal::Double_point& p = copy[i];
       const internal::Voxel& v = voxels[i];
-      std::uint32_t best = chosen.find(v)->second;
+      std::uint32_t best = chosen.find(v);
       auto squared_distance = [&p](const internal::Double_point& q) {
         const double dx = q.x() - p.x(), dy = q.y() - p.y(), dz = q.z() - p.z();
         return dx * dx + dy * dy + dz * dz;
@@ -166,37 +230,46 @@ thin_on_voxel_grid(const PointRange& points, double cell_size, const CGAL_NP_CLA
       double best_distance = squared_distance(copy[best]);
       const double slack = 1e-7 * cell_size;
       const double coordinates[3] = {p.x(), p.y(), p.z()};
+      // per axis and offset -2 ... 2, the squared gap from p to the cells' slab, less the slack: a
+      // cell's gap to p is the sum of its three, and whole slabs are skipped at once
+      double slab_gap[3][5];
+      for(int axis = 0; axis < 3; ++axis)
+        for(int offset = -2; offset <= 2; ++offset)
+        {
+          double d = 0.;
+          if(offset > 0)
+            d = double(v[axis] + offset) * cell_size - coordinates[axis];
+          else if(offset < 0)
+            d = coordinates[axis] - double(v[axis] + offset + 1) * cell_size;
+          d -= slack;
+          slab_gap[axis][offset + 2] = d > 0. ? d * d : 0.;
+        }
       for(int a = -2; a <= 2; ++a)
+      {
+        const double gap_a = slab_gap[0][a + 2];
+        if(gap_a > best_distance)
+          continue;
         for(int b = -2; b <= 2; ++b)
+        {
+          const double gap_ab = gap_a + slab_gap[1][b + 2];
+          if(gap_ab > best_distance)
+            continue;
           for(int c = -2; c <= 2; ++c)
           {
-            if(a == 0 && b == 0 && c == 0)
+            if((a == 0 && b == 0 && c == 0) || gap_ab + slab_gap[2][c + 2] > best_distance)
               continue;
-            const int offset[3] = {a, b, c};
-            double gap = 0.; // from p to the cell's box, less the slack
-            for(int axis = 0; axis < 3; ++axis)
+            const std::uint32_t found = chosen.find({v[0] + a, v[1] + b, v[2] + c});
+            if(found == internal::Voxel_table::EMPTY)
+              continue;
+            const double d = squared_distance(copy[found]);
+            if(d < best_distance || (d == best_distance && found < best))
             {
-              double d = 0.;
-              if(offset[axis] > 0)
-                d = double(v[axis] + offset[axis]) * cell_size - coordinates[axis];
-              else if(offset[axis] < 0)
-                d = coordinates[axis] - double(v[axis] + offset[axis] + 1) * cell_size;
-              d -= slack;
-              if(d > 0.)
-                gap += d * d;
-            }
-            if(gap > best_distance)
-              continue;
-            const auto found = chosen.find({v[0] + a, v[1] + b, v[2] + c});
-            if(found == chosen.end())
-              continue;
-            const double d = squared_distance(copy[found->second]);
-            if(d < best_distance || (d == best_distance && found->second < best))
-            {
-              best = found->second;
+              best = found;
               best_distance = d;
             }
           }
+        }
+      }
       result.nearest_representative[i] = position[best];
     });
   return result;

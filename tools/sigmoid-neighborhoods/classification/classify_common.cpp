@@ -222,16 +222,23 @@ Prediction predict(const Featured_file& file, const Classifier_settings& setting
   const std::size_t n = file.model.points.size();
   Prediction p;
   p.confidence.assign(labels.size(), std::vector<float>(n, 0.f));
-  std::vector<float> probabilities(labels.size());
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    forest(i, probabilities);
-    for(std::size_t c = 0; c < labels.size(); ++c)
-      p.confidence[c][i] = probabilities[c];
-  }
   p.classes.assign(n, -1);
+#ifdef CGAL_LINKED_WITH_TBB
+  // --threads bounds CGAL's loops over the points (each point's result depends on it alone)
+  std::unique_ptr<tbb::global_control> limit;
+  if(settings.features.threads != 0)
+    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                  settings.features.threads);
+#endif
   if(graphcut > 0.)
   {
+    std::vector<float> probabilities(labels.size());
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      forest(i, probabilities);
+      for(std::size_t c = 0; c < labels.size(); ++c)
+        p.confidence[c][i] = probabilities[c];
+    }
     typedef SN::Oriented_point_set::Kernel Kernel;
     typedef CGAL::Identity_property_map<Kernel::Point_3> Point_map;
     CGAL::Classification::Point_set_neighborhood<Kernel, std::vector<Kernel::Point_3>, Point_map> neighborhood(
@@ -239,8 +246,9 @@ Prediction predict(const Featured_file& file, const Classifier_settings& setting
     CGAL::Classification::classify_with_graphcut<CGAL::Parallel_if_available_tag>(
       file.model.points, Point_map(), labels, forest, neighborhood.k_neighbor_query(12), float(graphcut), 1, p.classes);
   }
-  else
-    CGAL::Classification::classify<CGAL::Parallel_if_available_tag>(file.model.points, labels, forest, p.classes);
+  else // the forest evaluated once per point: the confidences and the most confident class
+    CGAL::Classification::classify<CGAL::Parallel_if_available_tag>(file.model.points, labels, forest, p.classes,
+                                                                     p.confidence);
   p.seconds = timer.time();
   return p;
 }

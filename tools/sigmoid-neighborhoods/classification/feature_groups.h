@@ -8,6 +8,7 @@
 #ifndef SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_FEATURE_GROUPS_H
 #define SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_FEATURE_GROUPS_H
 
+#include "cgal_features.h"
 #include "feature_options.h"
 #include "../command_line.h"
 #include "../optimal_command.h"
@@ -19,9 +20,6 @@
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 #include <CGAL/Sigmoid_neighborhoods/Classification/add_point_features.h>
 
-#include <CGAL/Classification/Feature_set.h>
-#include <CGAL/Classification/Point_set_feature_generator.h>
-#include <CGAL/Point_set_3.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,36 +42,6 @@ inline void append_point_features(const std::vector<SN::Point_features>& feature
     c.values.reserve(features.size());
     for(const SN::Point_features& p : features)
       c.values.push_back(p.value(f));
-    columns.push_back(std::move(c));
-  }
-}
-
-// CGAL's generator on its own neighbor structures (it builds them), its features read back as columns;
-// `voxel` its first scale in metres, 0: CGAL's choice from the spacing.
-inline void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scales, double voxel,
-                                 std::vector<Feature_column>& columns)
-{
-  typedef SN::Oriented_point_set::Kernel Kernel;
-  typedef CGAL::Point_set_3<Kernel::Point_3> Point_set;
-  Point_set points;
-  points.reserve(model.points.size());
-  for(const auto& p : model.points)
-    points.insert(p);
-  // Sequential: on TBB, the generator's neighborhoods and eigen analysis give features that differ in
-  // their last bits from run to run (so would the forests trained on them); the features themselves
-  // are then computed side by side, each on its own.
-  CGAL::Classification::Point_set_feature_generator<Kernel, Point_set, Point_set::Point_map, CGAL::Sequential_tag>
-    generator(points, points.point_map(), scales, voxel > 0. ? float(voxel) : -1.f);
-  CGAL::Classification::Feature_set features;
-  features.begin_parallel_additions();
-  generator.generate_point_based_features(features);
-  features.end_parallel_additions();
-  for(std::size_t f = 0; f < features.size(); ++f)
-  {
-    Feature_column c{features[f]->name(), {}};
-    c.values.reserve(points.size());
-    for(std::size_t i = 0; i < points.size(); ++i)
-      c.values.push_back(features[f]->value(i));
     columns.push_back(std::move(c));
   }
 }
@@ -217,8 +185,9 @@ std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set
   for(const std::string& group : o.groups)
   {
     progress(group);
-    if(group == "cgal" || group == "cgal-metric")
-      internal_classification::append_cgal_features(model, o.cgal_scales, group == "cgal" ? 0. : o.cgal_voxel, columns);
+    if(group == "cgal" || group == "cgal-metric" || group == "cgal-grid")
+      append_cgal_features(model, o.cgal_scales, group == "cgal" ? 0. : o.cgal_voxel, o.threads, columns,
+                           group == "cgal-grid");
     else if(group == "k20" || group == "multiscale" || group == "multiscale-sigmoid")
     {
       const bool sigmoid = group == "multiscale-sigmoid";

@@ -37,8 +37,8 @@ struct Feature_options
   std::vector<unsigned int> scales{10, 25, 50, 100};   // groups multiscale and multiscale-sigmoid
   double sigmoid_a = CGAL_PI / 6., sigmoid_b = CGAL_PI / 3.; // multiscale-sigmoid's weights
   std::vector<double> cell_sizes{2.5, 5., 10.};        // group height
-  unsigned int cgal_scales = 5;                        // groups cgal and cgal-metric
-  // group cgal-metric: the voxel of CGAL's first scale in metres, doubled per scale (the group cgal
+  unsigned int cgal_scales = 5;                        // groups cgal, cgal-metric and cgal-grid
+  // groups cgal-metric and cgal-grid: the voxel of CGAL's first scale in metres, doubled per scale (the group cgal
   // takes CGAL's own choice, the mean range of each file's 12 nearest neighbors, which follows the
   // file's density: a model trained at one density reads other scales at another)
   double cgal_voxel = 0.5;
@@ -81,11 +81,13 @@ inline const char* FEATURE_GROUPS_USAGE =
   "                      first from each file's spacing, as CGAL chooses it\n"
   "      cgal-metric     the same on scales in metres: --cgal-voxel 0.5 m times 1, 2, 4 ... (a model\n"
   "                      applies at another density)\n"
+  "      cgal-grid       the features of cgal-metric's planimetric grids alone (vertical dispersion,\n"
+  "                      elevation, heights below and above, vertical range): no eigen analysis\n"
   "      k20             the eigen features (linearity ... normal_z) at k = 20, equal weights\n"
   "      eigenentropy    the same at the eigenentropy-optimal k of Weinmann et al., equal weights, and k\n"
   "      dimensionality  the same at the E_dim-optimal k, equal weights, and k\n"
   "      optimal         the same at the optimal sigmoid triple (a*, b*, k*), and k, a, b, the radius\n"
-  "      multiscale      the eigen features at k = 10, 25, 50, 100, equal weights\n"
+  "      multiscale      the eigen features at k = 10, 25, 50, 100 (--scales), equal weights\n"
   "      multiscale-sigmoid  the same with the sigmoid weights of --sigmoid A,B (default 30deg,60deg; the\n"
   "                      smaller angle is a, the larger b, one angle a step; pyramid-sigmoid's weights too)\n"
   "      height          z above the lowest point, below the highest and the range in 2.5, 5, 10 m cells\n"
@@ -97,7 +99,7 @@ inline const char* FEATURE_GROUPS_USAGE =
 
 inline const std::vector<std::string>& known_feature_groups()
 {
-  static const std::vector<std::string> groups{"cgal",         "cgal-metric",        "k20",    "eigenentropy",
+  static const std::vector<std::string> groups{"cgal",         "cgal-metric",        "cgal-grid", "k20", "eigenentropy",
                                                "dimensionality", "optimal",            "multiscale",
                                                "multiscale-sigmoid", "height", "pyramid", "pyramid-sigmoid"};
   return groups;
@@ -111,15 +113,16 @@ inline std::vector<std::string> parse_feature_groups(const std::string& text)
     const auto& known = known_feature_groups();
     if(std::find(known.begin(), known.end(), group) == known.end())
       throw Usage_error("--features: unknown group '" + group +
-                        "': expected cgal, cgal-metric, k20, eigenentropy, dimensionality, optimal, multiscale, "
+                        "': expected cgal, cgal-metric, cgal-grid, k20, eigenentropy, dimensionality, optimal, multiscale, "
                         "multiscale-sigmoid, height, pyramid or pyramid-sigmoid");
     if(std::find(groups.begin(), groups.end(), group) != groups.end())
       throw Usage_error("--features: group '" + group + "' given twice");
     groups.push_back(group);
   }
-  if(std::find(groups.begin(), groups.end(), "cgal") != groups.end() &&
-     std::find(groups.begin(), groups.end(), "cgal-metric") != groups.end())
-    throw Usage_error("--features: cgal and cgal-metric are the same features at other scales: give one of them");
+  auto has = [&](const char* g) { return std::find(groups.begin(), groups.end(), g) != groups.end(); };
+  if(int(has("cgal")) + int(has("cgal-metric")) + int(has("cgal-grid")) > 1)
+    throw Usage_error("--features: cgal, cgal-metric and cgal-grid share CGAL's features (cgal-grid its grids' "
+                      "alone): give one of them");
   return groups;
 }
 
@@ -175,7 +178,7 @@ inline double cell_halo(const Feature_options& o, bool pyramid_guess = true)
 inline std::string whole_set_groups(const Feature_options& o)
 {
   using internal_classification::has_group;
-  return has_group(o, "cgal") ? "cgal" : has_group(o, "cgal-metric") ? "cgal-metric" : "";
+  return has_group(o, "cgal") ? "cgal" : has_group(o, "cgal-metric") ? "cgal-metric" : has_group(o, "cgal-grid") ? "cgal-grid" : "";
 }
 
 } // namespace sigmoid_tool

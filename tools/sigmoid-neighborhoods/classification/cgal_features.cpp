@@ -1,0 +1,173 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#include "cgal_features.h"
+
+#include <CGAL/Classification/Feature_set.h>
+#include <CGAL/Classification/Point_set_feature_generator.h>
+#include <CGAL/Point_set_3.h>
+#include <CGAL/bounding_box.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <memory>
+#include <thread>
+
+namespace sigmoid_tool {
+
+namespace {
+
+typedef SN::Oriented_point_set::Kernel Kernel;
+typedef CGAL::Point_set_3<Kernel::Point_3> Point_set;
+typedef Point_set::Point_map Point_map;
+// the generator's types, with its defaults
+typedef CGAL::Classification::Point_set_feature_generator<Kernel, Point_set, Point_map, CGAL::Sequential_tag>
+  Generator;
+typedef Generator::Neighborhood Neighborhood;
+typedef Generator::Planimetric_grid Grid;
+typedef CGAL::Classification::Local_eigen_analysis Eigen_analysis;
+typedef CGAL::Default_diagonalize_traits<float, 3> Diagonalize_traits;
+
+// One scale of the generator (Point_set_feature_generator::Scale): a neighborhood on the points (the
+// first scale) or on their voxel grid, the eigen analysis of every point's 12 nearest neighbors in it,
+// and the planimetric grid.
+struct Scale
+{
+  float voxel_size = -1.f;
+  std::unique_ptr<Neighborhood> neighborhood;
+  std::unique_ptr<Eigen_analysis> eigen;
+  std::unique_ptr<Grid> grid;
+
+  void build_neighborhood_and_eigen(const Point_set& points, bool first)
+  {
+    if(first)
+      neighborhood = std::make_unique<Neighborhood>(points, points.point_map(), CGAL::Sequential_tag());
+    else
+      neighborhood = std::make_unique<Neighborhood>(points, points.point_map(), voxel_size, CGAL::Sequential_tag());
+    eigen = std::make_unique<Eigen_analysis>(Eigen_analysis::create_from_point_set(
+      points, points.point_map(), neighborhood->k_neighbor_query(12), CGAL::Sequential_tag(), Diagonalize_traits()));
+    if(voxel_size < 0)
+      voxel_size = eigen->mean_range();
+  }
+  float radius_neighbors() const { return voxel_size * 3; }
+  float radius_dtm() const { return voxel_size * 10; }
+};
+
+// Runs body(s) for s in [first, last) on up to `threads` threads; the first exception is rethrown.
+template <typename Body>
+void for_each_scale(std::size_t first, std::size_t last, unsigned int threads, const Body& body)
+{
+  const std::size_t count = last - first;
+  std::size_t workers = threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
+  workers = std::min(workers, count);
+  std::atomic<std::size_t> next(first);
+  std::vector<std::exception_ptr> errors(count);
+  auto work = [&] {
+    for(std::size_t s = next++; s < last; s = next++)
+      try
+      {
+        body(s);
+      }
+      catch(...)
+      {
+        errors[s - first] = std::current_exception();
+      }
+  };
+  std::vector<std::thread> pool;
+  for(std::size_t w = 1; w < workers; ++w)
+    pool.emplace_back(work);
+  work();
+  for(std::thread& t : pool)
+    t.join();
+  for(const std::exception_ptr& e : errors)
+    if(e)
+      std::rethrow_exception(e);
+}
+
+} // namespace
+
+void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scale_count, double voxel,
+                          unsigned int threads, std::vector<Feature_column>& columns, bool grid_only)
+{
+  CGAL_precondition(!grid_only || voxel > 0.);
+  Point_set points;
+  points.reserve(model.points.size());
+  for(const auto& p : model.points)
+    points.insert(p);
+  const Point_map point_map = points.point_map();
+  const Kernel::Iso_cuboid_3 bbox = CGAL::bounding_box(
+    CGAL::make_transform_iterator_from_property_map(points.begin(), point_map),
+    CGAL::make_transform_iterator_from_property_map(points.end(), point_map));
+
+  // The scales as the generator's constructor builds them, one after the other there: the voxel of
+  // scale s is the first's times 2^s, the first's CGAL's choice from its eigen analysis when not given
+  std::vector<Scale> scales(std::max(1u, scale_count));
+  std::size_t first_parallel = 0;
+  if(voxel > 0.)
+    scales[0].voxel_size = float(voxel);
+  else
+  {
+    scales[0].build_neighborhood_and_eigen(points, true);
+    first_parallel = 1;
+  }
+  for(std::size_t s = 1; s < scales.size(); ++s)
+    scales[s].voxel_size = scales[s - 1].voxel_size * 2;
+  if(!grid_only)
+    for_each_scale(first_parallel, scales.size(), threads,
+                   [&](std::size_t s) { scales[s].build_neighborhood_and_eigen(points, s == 0); });
+  scales[0].grid = std::make_unique<Grid>(points, point_map, bbox, scales[0].voxel_size);
+  for(std::size_t s = 1; s < scales.size(); ++s)
+    scales[s].grid = std::make_unique<Grid>(scales[s - 1].grid.get());
+
+  // The features of generate_point_based_features(), in its order, computed side by side on TBB. The
+  // feature set keeps references to lvalue arguments until end_parallel_additions(): the index of an
+  // eigenvalue is given as a copy.
+  using namespace CGAL::Classification::Feature;
+  CGAL::Classification::Feature_set features;
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    std::unique_ptr<tbb::global_control> limit;
+    if(threads != 0)
+      limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+#endif
+    features.begin_parallel_additions();
+    if(!grid_only)
+    {
+      for(unsigned int j = 0; j < 3; ++j)
+        for(std::size_t s = 0; s < scales.size(); ++s)
+          features.add_with_scale_id<Eigenvalue>(s, points, *scales[s].eigen, static_cast<unsigned int>(j));
+      for(std::size_t s = 0; s < scales.size(); ++s)
+        features.add_with_scale_id<Generator::Distance_to_plane>(s, points, point_map, *scales[s].eigen);
+    }
+    for(std::size_t s = 0; s < scales.size(); ++s)
+      features.add_with_scale_id<Generator::Dispersion>(s, points, point_map, *scales[s].grid,
+                                                        scales[s].radius_neighbors());
+    for(std::size_t s = 0; s < scales.size(); ++s)
+      features.add_with_scale_id<Generator::Elevation>(s, points, point_map, *scales[s].grid, scales[s].radius_dtm());
+    for(std::size_t s = 0; s < scales.size(); ++s)
+      features.add_with_scale_id<Generator::Height_below>(s, points, point_map, *scales[s].grid);
+    for(std::size_t s = 0; s < scales.size(); ++s)
+      features.add_with_scale_id<Generator::Height_above>(s, points, point_map, *scales[s].grid);
+    for(std::size_t s = 0; s < scales.size(); ++s)
+      features.add_with_scale_id<Generator::Vertical_range>(s, points, point_map, *scales[s].grid);
+    if(!grid_only)
+      for(std::size_t s = 0; s < scales.size(); ++s)
+        features.add_with_scale_id<Generator::Verticality>(s, points, *scales[s].eigen);
+    features.end_parallel_additions();
+  }
+  for(std::size_t f = 0; f < features.size(); ++f)
+  {
+    Feature_column c{features[f]->name(), {}};
+    c.values.reserve(points.size());
+    for(std::size_t i = 0; i < points.size(); ++i)
+      c.values.push_back(features[f]->value(i));
+    columns.push_back(std::move(c));
+  }
+}
+
+} // namespace sigmoid_tool

@@ -1,0 +1,31 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The groups cgal, cgal-metric and cgal-grid: CGAL's Point_set_feature_generator, compiled once
+// (cgal_features.cpp) for every command that computes features.
+
+#ifndef SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_CGAL_FEATURES_H
+#define SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_CGAL_FEATURES_H
+
+#include "feature_options.h"
+
+#include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
+
+#include <vector>
+
+namespace sigmoid_tool {
+
+// The point-based features of CGAL's Point_set_feature_generator on `scales` scales of `model`,
+// appended as columns in the generator's order and with its names. `voxel`: the first scale in metres,
+// doubled per scale; 0: CGAL's choice, the mean range of each point's 12 nearest neighbors. The scales
+// are built side by side on up to `threads` threads (0: all), each as the generator builds it with
+// CGAL::Sequential_tag, so that the values are the sequential generator's bit for bit for any thread
+// count (the generator's own parallel build differs in the last bits from run to run).
+// `grid_only`: the features of the planimetric grids alone (vertical dispersion, elevation, heights
+// below and above, vertical range), without the neighborhoods and eigen analyses; needs `voxel` > 0.
+void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scales, double voxel, unsigned int threads,
+                          std::vector<Feature_column>& columns, bool grid_only = false);
+
+} // namespace sigmoid_tool
+
+#endif // SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_CGAL_FEATURES_H
