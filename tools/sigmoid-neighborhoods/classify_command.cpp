@@ -47,7 +47,7 @@ const char* const CLASSIFY_USAGE =
   "  --scales K,...: the neighbor counts of the groups multiscale and multiscale-sigmoid (10,25,50,100),\n"
   "      stored in the model\n"
   "  --max-per-class N: train on at most N points of each class, evenly spaced in the files' order (0: all)\n"
-  "  training runs its trees in parallel on TBB when the build has it: the same forest for any --threads\n"
+  "  training runs its trees in parallel on TBB when the build has it: the same trees for any --threads\n"
   "  --graphcut STRENGTH: CGAL's graph-cut regularisation of the labels on 12 neighbors (e.g. 0.2)\n"
   "  normals are estimated (pca on 18 neighbors) and oriented upwards unless --orientation says otherwise\n"
   "  predict writes a binary PLY: scalar_label (class index), scalar_confidence_<class>, red green blue\n"
