@@ -20,7 +20,6 @@
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 #include <CGAL/Sigmoid_neighborhoods/Classification/add_point_features.h>
 
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
