@@ -62,7 +62,7 @@ const char* const CLASSIFY_USAGE =
   "  evaluate writes DIR/evaluation.md, .csv, .json: confusion matrix, precision, recall, F1, IoU per\n"
   "      class, overall accuracy, mean F1, mean IoU\n"
   "  experiment trains and tests every feature set of --sets (NAME=GROUP,GROUP;NAME=...; default: the sets\n"
-  "      A to M of the manual) in --orders feature orders, with and without graph-cut, and writes\n"
+  "      A to Q of benchmark/README.md) in --orders feature orders, with and without graph-cut, and writes\n"
   "      DIR/experiment.md, experiment.csv, experiment.json and runs.csv; each set is also cross-validated on\n"
   "      the training files (each left out in turn, --cv-orders orders), and the set and graph-cut of the\n"
   "      best cross-validated mean IoU are reported as the choice\n";

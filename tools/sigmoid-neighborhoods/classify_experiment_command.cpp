@@ -47,7 +47,9 @@ const char* const DEFAULT_EXPERIMENT_SETS =
   "F_sigmoid=multiscale-sigmoid,height;G_optimal=cgal,optimal;G_multiscale=cgal,multiscale;"
   "G_multiscale_sigmoid=cgal,multiscale-sigmoid;P=pyramid;P_sigmoid=pyramid-sigmoid;H_pyramid=cgal,pyramid;"
   "H_pyramid_sigmoid=cgal,pyramid-sigmoid;M=cgal-metric;M_multiscale_sigmoid=cgal-metric,multiscale-sigmoid;"
-  "M_multiscale_sigmoid_pyramid=cgal-metric,multiscale-sigmoid,pyramid";
+  "M_multiscale_sigmoid_pyramid=cgal-metric,multiscale-sigmoid,pyramid;"
+  "N_multiscale_sigmoid_pyramid_height=multiscale-sigmoid,pyramid,height;"
+  "Q_grid_multiscale_sigmoid_pyramid_height=cgal-grid,multiscale-sigmoid,pyramid,height";
 
 struct Feature_set_spec
 {
