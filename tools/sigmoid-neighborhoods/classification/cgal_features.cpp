@@ -89,6 +89,19 @@ void for_each_scale(std::size_t first, std::size_t last, unsigned int threads, c
       std::rethrow_exception(e);
 }
 
+void append_columns(const CGAL::Classification::Feature_set& features, std::size_t size,
+                    std::vector<Feature_column>& columns)
+{
+  for(std::size_t f = 0; f < features.size(); ++f)
+  {
+    Feature_column c{features[f]->name(), {}};
+    c.values.reserve(size);
+    for(std::size_t i = 0; i < size; ++i)
+      c.values.push_back(features[f]->value(i));
+    columns.push_back(std::move(c));
+  }
+}
+
 } // namespace
 
 void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scale_count, double voxel,
@@ -103,6 +116,16 @@ void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scal
   const Kernel::Iso_cuboid_3 bbox = CGAL::bounding_box(
     CGAL::make_transform_iterator_from_property_map(points.begin(), point_map),
     CGAL::make_transform_iterator_from_property_map(points.end(), point_map));
+
+  if(threads == 1 && !grid_only)
+  {
+    // one thread: CGAL's generator itself, the reference of the path below
+    Generator generator(points, point_map, std::max(1u, scale_count), voxel > 0. ? float(voxel) : -1.f);
+    CGAL::Classification::Feature_set features;
+    generator.generate_point_based_features(features);
+    append_columns(features, points.size(), columns);
+    return;
+  }
 
   // The scales as the generator's constructor builds them, one after the other there: the voxel of
   // scale s is the first's times 2^s, the first's CGAL's choice from its eigen analysis when not given
@@ -160,14 +183,7 @@ void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scal
         features.add_with_scale_id<Generator::Verticality>(s, points, *scales[s].eigen);
     features.end_parallel_additions();
   }
-  for(std::size_t f = 0; f < features.size(); ++f)
-  {
-    Feature_column c{features[f]->name(), {}};
-    c.values.reserve(points.size());
-    for(std::size_t i = 0; i < points.size(); ++i)
-      c.values.push_back(features[f]->value(i));
-    columns.push_back(std::move(c));
-  }
+  append_columns(features, points.size(), columns);
 }
 
 } // namespace sigmoid_tool

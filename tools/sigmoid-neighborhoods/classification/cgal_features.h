@@ -17,10 +17,11 @@ namespace sigmoid_tool {
 
 // The point-based features of CGAL's Point_set_feature_generator on `scales` scales of `model`,
 // appended as columns in the generator's order and with its names. `voxel`: the first scale in metres,
-// doubled per scale; 0: CGAL's choice, the mean range of each point's 12 nearest neighbors. The scales
-// are built side by side on up to `threads` threads (0: all), each as the generator builds it with
-// CGAL::Sequential_tag, so that the values are the sequential generator's bit for bit for any thread
-// count (the generator's own parallel build differs in the last bits from run to run).
+// doubled per scale; 0: CGAL's choice, the mean range of each point's 12 nearest neighbors. On one
+// thread, CGAL's generator itself; on more (`threads`, 0: all), the scales are built side by side, each
+// as the generator builds it with CGAL::Sequential_tag, so that the values are the sequential
+// generator's bit for bit for any thread count (the generator's own parallel build differs in the last
+// bits from run to run).
 // `grid_only`: the features of the planimetric grids alone (vertical dispersion, elevation, heights
 // below and above, vertical range), without the neighborhoods and eigen analyses; needs `voxel` > 0.
 void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scales, double voxel, unsigned int threads,
