@@ -6,8 +6,9 @@
 # `classify predict` run (reading, normals and neighbor rows where the set needs them, the features,
 # the forest's prediction, the PLY written) on the two eastern IGN LiDAR HD tiles, one after the other,
 # on one thread and on two, the median of REPEATS runs. Each set is trained once on the four western
-# tiles (25 trees, depth 20, as classify train by default). The ratio is against the set named cgal
-# (CGAL's generator), which must come first. Needs a quiet machine: the figures are wall times.
+# tiles (25 trees, depth 20, as classify train by default). The ratio is against the first set (give
+# cgal, CGAL's generator, first). Each figure is the median [min, max] of the runs. Needs a quiet
+# machine: the figures are wall times.
 # usage: benchmark/classification_speed.sh TOOL OUT_DIR [REPEATS] [SETS]
 #   SETS: NAME=GROUPS[ OPTION VALUE...] separated by ';', e.g.
 #   "cgal=cgal;default=cgal-metric,multiscale-sigmoid,pyramid;fast=multiscale-sigmoid,pyramid,height --scales 10,25"
@@ -53,11 +54,13 @@ echo "$sets" | tr ';' '\n' | while IFS= read -r spec; do
         total=$(awk -v a="$total" -v b="$s" 'BEGIN { print a + b }')
       done
       echo "$total"
-    done | median > "$out/$name.$threads.txt"
+    done > "$out/$name.$threads.runs"
+    median < "$out/$name.$threads.runs" > "$out/$name.$threads.txt"
   done
   t1=$(cat "$out/$name.1.txt"); t2=$(cat "$out/$name.2.txt")
+  range() { sort -g "$out/$name.$1.runs" | awk 'NR == 1 { lo = $1 } { hi = $1 } END { printf "[%.2f, %.2f]", lo, hi }'; }
   [ -n "$base1" ] || { base1=$t1; base2=$t2; }
-  printf '| %s | `%s` | %.2f | %.2f | %.2fx / %.2fx |\n' "$name" "$rest" "$t1" "$t2" \
+  printf '| %s | `%s` | %.2f %s | %.2f %s | %.2fx / %.2fx |\n' "$name" "$rest" "$t1" "$(range 1)" "$t2" "$(range 2)" \
     "$(awk -v a="$t1" -v b="$base1" 'BEGIN { print a / b }')" "$(awk -v a="$t2" -v b="$base2" 'BEGIN { print a / b }')" \
     >> "$out/speed.md"
   echo "$name: $t1 s on one thread, $t2 s on two"
