@@ -867,6 +867,69 @@ TEST_CASE("meshes: any FaceListGraph, Polyhedron_3 as Surface_mesh", "[mesh]")
   }
 }
 
+// The kd-tree against brute force where its shortcuts could go wrong: a flat slab of random points
+// (the airborne case), a grid (ties at every distance, some on the pruning bound), exact duplicates
+// (distance 0), few neighbors (kept sorted) and many (selected in bulk, each query starting from its
+// predecessor's bound), on one thread and two.
+TEST_CASE("the kd-tree's k nearest and balls equal brute force", "[neighbors]")
+{
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> along(0., 30.), height(0., 0.5);
+  Point_list points;
+  for(int i = 0; i < 1200; ++i)
+    points.emplace_back(Point_3(along(rng), along(rng), height(rng)), Vector_3(0, 0, 1));
+  for(int x = 0; x < 12; ++x)
+    for(int y = 0; y < 12; ++y)
+      points.emplace_back(Point_3(40. + x, y, 0.), Vector_3(0, 0, 1));
+  for(int d = 0; d < 30; ++d)
+    points.push_back(points[std::size_t(37 * d) % points.size()]);
+  std::shuffle(points.begin(), points.end(), rng);
+
+  std::vector<std::uint32_t> expected_indices, indices;
+  std::vector<std::size_t> expected_offsets, offsets;
+  brute_force_rows(points, 100, expected_indices, expected_offsets);
+  for(unsigned int k : {1u, 7u, 32u, 33u, 100u})
+    for(unsigned int threads : {1u, 2u})
+    {
+      CAPTURE(k, threads);
+      SN::compute_k_nearest_neighbors<SN::Parallel_if_available_tag>(
+        points, k, indices, offsets,
+        SN::parameters::number_of_threads(threads, CGAL::parameters::point_map(Point_map())));
+      REQUIRE(offsets.size() == points.size() + 1);
+      bool all_equal = true;
+      for(std::size_t i = 0; i < points.size(); ++i)
+        all_equal = all_equal && std::equal(indices.begin() + offsets[i], indices.begin() + offsets[i + 1],
+                                            expected_indices.begin() + expected_offsets[i]) &&
+                    offsets[i + 1] - offsets[i] == k;
+      CHECK(all_equal);
+    }
+
+  std::vector<SN::internal::Double_point> copy;
+  for(const auto& p : points)
+    copy.emplace_back(p.first.x(), p.first.y(), p.first.z());
+  const SN::internal::Neighbor_query query(copy);
+  std::vector<SN::internal::Neighbor> found;
+  std::size_t checked_balls = 0;
+  for(double radius : {0., 1., 2., 2.5}) // the grid's distances 1 and 2 fall on the ball's boundary
+    for(std::uint32_t i = 0; i < copy.size(); i += 7)
+    {
+      query.query_ball(i, radius, found);
+      std::vector<std::pair<double, std::uint32_t>> expected;
+      for(std::uint32_t j = 0; j < copy.size(); ++j)
+      {
+        const double d2 = CGAL::squared_distance(points[i].first, points[j].first);
+        if(j != i && d2 <= radius * radius)
+          expected.emplace_back(d2, j);
+      }
+      std::sort(expected.begin(), expected.end());
+      REQUIRE(found.size() == expected.size());
+      for(std::size_t t = 0; t < found.size(); ++t)
+        REQUIRE(found[t].index == expected[t].second);
+      ++checked_balls;
+    }
+  CHECK(checked_balls == 4 * ((copy.size() + 6) / 7));
+}
+
 TEST_CASE("compute_k_nearest_neighbors: SPEC §2's rows, shared by several calls", "[neighborhoods]")
 {
   // a grid: many ties at equal distances, decided by index

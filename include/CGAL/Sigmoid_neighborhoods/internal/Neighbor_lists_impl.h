@@ -13,6 +13,8 @@
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
 #include <algorithm>
+#include <limits>
+#include <cmath>
 #include <vector>
 
 namespace CGAL {
@@ -29,12 +31,31 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Neighbor_lists nearest_neighbor_rows(co
   rows.offsets.resize(n + 1);
   for(std::size_t i = 0; i <= n; ++i)
     rows.offsets[i] = i * row;
+  const std::vector<std::uint32_t>& order = query.spatial_order();
+  // The points in the tree's order: consecutive queries read the same leaves, and each starts from
+  // the bound its predecessor gives (triangle inequality: the predecessor's k-th neighbor distance
+  // plus their distance, with a relative margin far above the roundings, 1e-15 at most).
+  struct Scratch
+  {
+    std::vector<Neighbor> found;
+    std::uint32_t previous = 0;
+    double previous_radius = -1.;
+  };
   for_each_index<Parallel_if_available_tag>(
-    n, threads, [] { return std::vector<Neighbor>(); },
-    [&](std::size_t i, std::vector<Neighbor>& found) {
-      query.query(static_cast<std::uint32_t>(i), k, found);
+    n, threads, [] { return Scratch(); },
+    [&](std::size_t t, Scratch& s) {
+      const std::uint32_t i = static_cast<std::uint32_t>(order.empty() ? t : order[t]);
+      double bound = (std::numeric_limits<double>::infinity)();
+      if(s.previous_radius >= 0.)
+      {
+        const double reach = s.previous_radius + std::sqrt(query.squared_distance(i, s.previous));
+        bound = reach * reach * (1. + 1e-9);
+      }
+      query.query(i, k, s.found, bound);
       for(std::size_t j = 0; j < row; ++j)
-        rows.indices[i * row + j] = found[j].index;
+        rows.indices[i * row + j] = s.found[j].index;
+      s.previous = i;
+      s.previous_radius = row == 0 ? -1. : std::sqrt(s.found[row - 1].squared_distance);
     });
   return rows;
 }

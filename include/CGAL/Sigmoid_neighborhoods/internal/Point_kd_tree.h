@@ -1,0 +1,142 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_POINT_KD_TREE_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_POINT_KD_TREE_H
+
+#include <CGAL/Sigmoid_neighborhoods/config.h>
+
+#include <CGAL/Simple_cartesian.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+namespace internal {
+
+typedef CGAL::Simple_cartesian<double> Double_kernel;
+typedef Double_kernel::Point_3 Double_point;
+
+struct Neighbor
+{
+  std::uint32_t index;
+  double squared_distance;
+};
+
+// The order of neighborhoods (SPEC §2): by squared distance, ties by index, so that they do not
+// depend on the tree's traversal.
+inline bool is_nearer(const Neighbor& x, const Neighbor& y)
+{
+  return x.squared_distance < y.squared_distance || (x.squared_distance == y.squared_distance && x.index < y.index);
+}
+
+// Sorts by is_nearer(). A k-NN result (a few dozen neighbors, in the tree's heap order) is placed
+// by rank, each neighbor's rank the number of neighbors nearer than it: comparisons without
+// branches, where std::sort's mispredicted ones took a quarter of the query's time on a scan.
+// Indices are distinct, so the ranks are a permutation.
+inline void sort_by_nearness(std::vector<Neighbor>& neighbors)
+{
+  constexpr std::size_t RANKED = 64;
+  const std::size_t m = neighbors.size();
+  if(m > RANKED)
+  {
+    std::sort(neighbors.begin(), neighbors.end(), [](const Neighbor& x, const Neighbor& y) { return is_nearer(x, y); });
+    return;
+  }
+  double distance[RANKED];
+  std::uint32_t index[RANKED];
+  Neighbor sorted[RANKED];
+  for(std::size_t e = 0; e < m; ++e)
+  {
+    distance[e] = neighbors[e].squared_distance;
+    index[e] = neighbors[e].index;
+  }
+  for(std::size_t e = 0; e < m; ++e)
+  {
+    std::size_t rank = 0;
+    for(std::size_t f = 0; f < m; ++f)
+      rank += std::size_t((distance[f] < distance[e]) | ((distance[f] == distance[e]) & (index[f] < index[e])));
+    sorted[rank] = neighbors[e];
+  }
+  std::copy(sorted, sorted + m, neighbors.begin());
+}
+
+// A kd-tree over point indices for the package's exact queries: the k nearest other points and the
+// balls of a point of the set, ordered by is_nearer(). Median splits on the widest side of each
+// node's box, leaves of at most LEAF_SIZE points whose coordinates are stored together in leaf
+// order. The k nearest are selected with the tie rule itself, so no query is repeated for ties.
+// A node is skipped only when it is farther than the current k-th neighbor; its lower bound is the
+// sum of the squared gaps per axis between the query and the node's slab (each child's slab ends at
+// its extreme point along the split axis), computed as a point's squared distance is, from rounded
+// differences that are monotone: it never exceeds the distance of a point inside. The squared
+// distances are (dx^2 + dy^2) + dz^2 of the coordinates' differences, as CGAL's Euclidean_distance
+// computes them, so results do not depend on the search structure.
+class Point_kd_tree
+{
+public:
+  static constexpr std::uint32_t LEAF_SIZE = 8;
+  // up to this many neighbors, a query keeps its candidates sorted; beyond, it selects them in bulk
+  static constexpr std::size_t SORTED_INSERTION_K = 32;
+
+  Point_kd_tree() = default;
+  // `points` may be released after the construction: the tree keeps its own copy.
+  explicit Point_kd_tree(const std::vector<Double_point>& points);
+
+  // The min(k, n - 1) nearest points of point `i` other than `i` itself, ordered by is_nearer().
+  // `squared_bound`, when given, is a squared distance within which the caller knows that many
+  // points (e.g. from a nearby point's k-th neighbor): the search starts with it. A wrong bound costs
+  // a second search, never a wrong result.
+  void nearest(std::uint32_t i, std::size_t k, std::vector<Neighbor>& result,
+               double squared_bound = (std::numeric_limits<double>::infinity)()) const;
+
+  // The squared distance between points `i` and `j`, computed as the queries compute it.
+  double squared_distance(std::uint32_t i, std::uint32_t j) const
+  {
+    const double* p = &m_coordinates[3 * std::size_t(m_position[i])];
+    const double* q = &m_coordinates[3 * std::size_t(m_position[j])];
+    const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
+    return dx * dx + dy * dy + dz * dz;
+  }
+
+  // The points j != i with squared distance to point `i` at most `squared_radius`, ordered by
+  // is_nearer().
+  void ball(std::uint32_t i, double squared_radius, std::vector<Neighbor>& result) const;
+
+  // The point indices in leaf order: neighbors in this order are near in memory and in space.
+  const std::vector<std::uint32_t>& leaf_order() const { return m_index; }
+
+private:
+  // An inner node splits along `axis`: its left child (the next node) has its points at most at
+  // `left_end`, its right child (node `right`) at least at `right_begin`. A leaf (axis 3) holds the
+  // positions [begin, end).
+  struct Node
+  {
+    double left_end, right_begin;
+    std::uint32_t begin, end; // for an inner node, begin is the right child
+    std::uint32_t axis;
+  };
+
+  std::uint32_t build(std::uint32_t begin, std::uint32_t end);
+  template <typename Visit_leaf, typename Bound>
+  void descend(std::uint32_t node, const double* q, double* gap, const Visit_leaf& visit, const Bound& bound) const;
+
+  std::vector<Node> m_nodes;
+  std::vector<double> m_coordinates; // x, y, z of each point, in leaf order
+  std::vector<std::uint32_t> m_index; // the point index of each position
+  std::vector<std::uint32_t> m_position; // the position of each point index
+};
+
+} // namespace internal
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE
+#include <CGAL/Sigmoid_neighborhoods/internal/Point_kd_tree_impl.h>
+#endif
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_POINT_KD_TREE_H

@@ -1,0 +1,229 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+//
+// The kd-tree's construction and queries (see config.h): included by Point_kd_tree.h, or compiled
+// once in CGAL::Sigmoid_neighborhoods_core.
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_POINT_KD_TREE_IMPL_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_POINT_KD_TREE_IMPL_H
+
+#include <CGAL/Sigmoid_neighborhoods/internal/Point_kd_tree.h>
+
+#include <algorithm>
+#include <limits>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+namespace internal {
+
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Point_kd_tree::Point_kd_tree(const std::vector<Double_point>& points)
+{
+  const std::uint32_t n = static_cast<std::uint32_t>(points.size());
+  if(n == 0)
+    return;
+  m_index.resize(n);
+  for(std::uint32_t i = 0; i < n; ++i)
+    m_index[i] = i;
+  // the coordinates by point index while building, then in leaf order
+  m_coordinates.resize(3 * std::size_t(n));
+  for(std::uint32_t i = 0; i < n; ++i)
+    for(int d = 0; d < 3; ++d)
+      m_coordinates[3 * std::size_t(i) + d] = points[i][d];
+  m_nodes.reserve(2 * (std::size_t(n) / LEAF_SIZE + 1));
+  build(0, n);
+  std::vector<double> ordered(m_coordinates.size());
+  m_position.resize(n);
+  for(std::uint32_t e = 0; e < n; ++e)
+  {
+    std::copy_n(&m_coordinates[3 * std::size_t(m_index[e])], 3, &ordered[3 * std::size_t(e)]);
+    m_position[m_index[e]] = e;
+  }
+  m_coordinates.swap(ordered);
+}
+
+// Builds the node of positions [begin, end) (m_coordinates still by point index) and returns it.
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION std::uint32_t Point_kd_tree::build(std::uint32_t begin, std::uint32_t end)
+{
+  const std::uint32_t id = static_cast<std::uint32_t>(m_nodes.size());
+  m_nodes.push_back(Node{0., 0., begin, end, 3});
+  if(end - begin <= LEAF_SIZE)
+    return id;
+  double low[3], high[3];
+  for(int d = 0; d < 3; ++d)
+  {
+    low[d] = (std::numeric_limits<double>::max)();
+    high[d] = -(std::numeric_limits<double>::max)();
+  }
+  for(std::uint32_t e = begin; e < end; ++e)
+    for(int d = 0; d < 3; ++d)
+    {
+      const double c = m_coordinates[3 * std::size_t(m_index[e]) + d];
+      low[d] = (std::min)(low[d], c);
+      high[d] = (std::max)(high[d], c);
+    }
+  int axis = 0;
+  for(int d = 1; d < 3; ++d)
+    if(high[d] - low[d] > high[axis] - low[axis])
+      axis = d;
+  const std::uint32_t middle = begin + (end - begin) / 2;
+  const double* coordinates = m_coordinates.data();
+  auto coordinate = [coordinates, axis](std::uint32_t a) { return coordinates[3 * std::size_t(a) + axis]; };
+  std::nth_element(m_index.begin() + begin, m_index.begin() + middle, m_index.begin() + end,
+                   [&coordinate](std::uint32_t a, std::uint32_t b) {
+                     const double ca = coordinate(a), cb = coordinate(b);
+                     return ca < cb || (ca == cb && a < b);
+                   });
+  double left_end = -(std::numeric_limits<double>::max)();
+  for(std::uint32_t e = begin; e < middle; ++e)
+    left_end = (std::max)(left_end, coordinate(m_index[e]));
+  const double right_begin = coordinate(m_index[middle]);
+  build(begin, middle);
+  const std::uint32_t right = build(middle, end);
+  m_nodes[id] = Node{left_end, right_begin, right, 0, std::uint32_t(axis)};
+  return id;
+}
+
+// Visits the leaves of node `id` that are not farther than bound(), nearer child first; `gap`
+// holds the gaps per axis between q and the node's slab (restored on return).
+template <typename Visit_leaf, typename Bound>
+void Point_kd_tree::descend(std::uint32_t id, const double* q, double* gap, const Visit_leaf& visit,
+                            const Bound& bound) const
+{
+  const Node& node = m_nodes[id];
+  if(node.axis == 3)
+  {
+    visit(node.begin, node.end);
+    return;
+  }
+  const std::uint32_t axis = node.axis;
+  const double c = q[axis], parent_gap = gap[axis];
+  // the gap of each child along the axis: wider than the parent's only beyond the child's end
+  const double left_gap = c > node.left_end ? c - node.left_end : parent_gap;
+  const double right_gap = c < node.right_begin ? node.right_begin - c : parent_gap;
+  const bool left_first = left_gap <= right_gap;
+  const std::uint32_t children[2] = {id + 1, node.begin};
+  const double gaps[2] = {left_gap, right_gap};
+  for(int side = 0; side < 2; ++side)
+  {
+    const int child = left_first ? side : 1 - side;
+    gap[axis] = gaps[child];
+    // `<=`: a point at the bound may still win its tie by index
+    if(gap[0] * gap[0] + gap[1] * gap[1] + gap[2] * gap[2] <= bound())
+      descend(children[child], q, gap, visit, bound);
+  }
+  gap[axis] = parent_gap;
+}
+
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest(std::uint32_t i, std::size_t k,
+                                                                    std::vector<Neighbor>& result,
+                                                                    double squared_bound) const
+{
+  result.clear();
+  const std::size_t n = m_index.size();
+  k = (std::min)(k, n == 0 ? std::size_t(0) : n - 1);
+  if(k == 0)
+    return;
+  const double* q = &m_coordinates[3 * std::size_t(m_position[i])];
+  double gap[3] = {0., 0., 0.};
+  if(k <= SORTED_INSERTION_K)
+  {
+    // few neighbors: kept sorted, each candidate inserted in place
+    double threshold = squared_bound;
+    result.reserve(k + 1);
+    auto visit = [&](std::uint32_t begin, std::uint32_t end) {
+      for(std::uint32_t e = begin; e < end; ++e)
+      {
+        const double* p = &m_coordinates[3 * std::size_t(e)];
+        const double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+        const double d2 = dx * dx + dy * dy + dz * dz;
+        if(d2 > threshold || m_index[e] == i)
+          continue;
+        const Neighbor candidate{m_index[e], d2};
+        if(result.size() == k)
+        {
+          if(!is_nearer(candidate, result.back()))
+            continue;
+          result.pop_back();
+        }
+        std::size_t hole = result.size();
+        result.push_back(candidate);
+        for(; hole > 0 && is_nearer(candidate, result[hole - 1]); --hole)
+          result[hole] = result[hole - 1];
+        result[hole] = candidate;
+        if(result.size() == k)
+          threshold = result.back().squared_distance;
+      }
+    };
+    descend(0, q, gap, visit, [&] { return threshold; });
+    if(result.size() < k) // the caller's bound was too small
+      nearest(i, k, result);
+    return;
+  }
+  // Candidates are gathered unordered below a threshold, the k-th nearest distance among those
+  // kept, and cut down to the k nearest (the tie rule decides) as soon as k are found, so that the
+  // threshold prunes early, then whenever they reach 2k: far cheaper for large k than a heap, which
+  // reorders at each candidate. (A lambda, not is_nearer's address, lets the standard algorithms
+  // inline the comparison.)
+  const auto nearer = [](const Neighbor& x, const Neighbor& y) { return is_nearer(x, y); };
+  double threshold = squared_bound;
+  std::size_t cut_at = k;
+  auto keep_nearest = [&] {
+    std::nth_element(result.begin(), result.begin() + (k - 1), result.end(), nearer);
+    result.resize(k);
+    threshold = result[k - 1].squared_distance;
+    cut_at = k + (std::max)(k, std::size_t(16));
+  };
+  result.reserve(k + (std::max)(k, std::size_t(16)) + LEAF_SIZE);
+  auto visit = [&](std::uint32_t begin, std::uint32_t end) {
+    for(std::uint32_t e = begin; e < end; ++e)
+    {
+      const double* p = &m_coordinates[3 * std::size_t(e)];
+      const double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      if(d2 <= threshold && m_index[e] != i)
+        result.push_back(Neighbor{m_index[e], d2});
+    }
+    if(result.size() >= cut_at)
+      keep_nearest();
+  };
+  // `<=` in descend(): a point at the threshold may still win its tie by index
+  descend(0, q, gap, visit, [&] { return threshold; });
+  if(result.size() < k) // the caller's bound was too small
+  {
+    nearest(i, k, result);
+    return;
+  }
+  if(result.size() > k)
+    keep_nearest();
+  sort_by_nearness(result);
+}
+
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::ball(std::uint32_t i, double squared_radius,
+                                                                 std::vector<Neighbor>& result) const
+{
+  result.clear();
+  if(m_index.empty())
+    return;
+  const double* q = &m_coordinates[3 * std::size_t(m_position[i])];
+  auto visit = [&](std::uint32_t begin, std::uint32_t end) {
+    for(std::uint32_t e = begin; e < end; ++e)
+    {
+      const double* p = &m_coordinates[3 * std::size_t(e)];
+      const double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+      const double d2 = dx * dx + dy * dy + dz * dz;
+      if(d2 <= squared_radius && m_index[e] != i)
+        result.push_back(Neighbor{m_index[e], d2});
+    }
+  };
+  double gap[3] = {0., 0., 0.};
+  descend(0, q, gap, visit, [squared_radius] { return squared_radius; });
+  sort_by_nearness(result);
+}
+
+} // namespace internal
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_POINT_KD_TREE_IMPL_H
