@@ -68,14 +68,16 @@ inline void sort_by_nearness(std::vector<Neighbor>& neighbors)
 
 // A kd-tree over point indices for the package's exact queries: the k nearest other points and the
 // balls of a point of the set, ordered by is_nearer(). Median splits on the widest side of each
-// node's box, leaves of at most LEAF_SIZE points whose coordinates are stored together in leaf
-// order. The k nearest are selected with the tie rule itself, so no query is repeated for ties.
-// A node is skipped only when it is farther than the current k-th neighbor; its lower bound is the
-// sum of the squared gaps per axis between the query and the node's slab (each child's slab ends at
-// its extreme point along the split axis), computed as a point's squared distance is, from rounded
-// differences that are monotone: it never exceeds the distance of a point inside. The squared
-// distances are (dx^2 + dy^2) + dz^2 of the coordinates' differences, as CGAL's Euclidean_distance
-// computes them, so results do not depend on the search structure.
+// node's box, leaves of at most LEAF_SIZE points. It holds the indices in leaf order and its nodes,
+// about 12 bytes per point, and reads the coordinates where they are (a copy in leaf order, 24 bytes
+// more per point, was no faster on scans, whose points come in acquisition order). The k nearest
+// are selected with the tie rule itself, so no query is repeated for ties. A node is skipped only
+// when it is farther than the current k-th neighbor; its lower bound is the sum of the squared gaps
+// per axis between the query and the node's slab (each child's slab ends at its extreme point along
+// the split axis), computed as a point's squared distance is, from rounded differences that are
+// monotone: it never exceeds the distance of a point inside. The squared distances are
+// (dx^2 + dy^2) + dz^2 of the coordinates' differences, as CGAL's Euclidean_distance computes them,
+// so results do not depend on the search structure.
 class Point_kd_tree
 {
 public:
@@ -84,7 +86,7 @@ public:
   static constexpr std::size_t SORTED_INSERTION_K = 32;
 
   Point_kd_tree() = default;
-  // `points` may be released after the construction: the tree keeps its own copy.
+  // `points` must outlive the tree.
   explicit Point_kd_tree(const std::vector<Double_point>& points);
 
   // The min(k, n - 1) nearest points of point `i` other than `i` itself, ordered by is_nearer().
@@ -97,9 +99,8 @@ public:
   // The squared distance between points `i` and `j`, computed as the queries compute it.
   double squared_distance(std::uint32_t i, std::uint32_t j) const
   {
-    const double* p = &m_coordinates[3 * std::size_t(m_position[i])];
-    const double* q = &m_coordinates[3 * std::size_t(m_position[j])];
-    const double dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
+    const Double_point &p = (*m_points)[i], &q = (*m_points)[j];
+    const double dx = q.x() - p.x(), dy = q.y() - p.y(), dz = q.z() - p.z();
     return dx * dx + dy * dy + dz * dz;
   }
 
@@ -112,7 +113,7 @@ public:
 
 private:
   // An inner node splits along `axis`: its left child (the next node) has its points at most at
-  // `left_end`, its right child (node `right`) at least at `right_begin`. A leaf (axis 3) holds the
+  // `left_end`, its right child (node `begin`) at least at `right_begin`. A leaf (axis 3) holds the
   // positions [begin, end).
   struct Node
   {
@@ -126,9 +127,8 @@ private:
   void descend(std::uint32_t node, const double* q, double* gap, const Visit_leaf& visit, const Bound& bound) const;
 
   std::vector<Node> m_nodes;
-  std::vector<double> m_coordinates; // x, y, z of each point, in leaf order
+  const std::vector<Double_point>* m_points = nullptr;
   std::vector<std::uint32_t> m_index; // the point index of each position
-  std::vector<std::uint32_t> m_position; // the position of each point index
 };
 
 } // namespace internal

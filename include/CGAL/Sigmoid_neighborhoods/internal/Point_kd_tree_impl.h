@@ -23,27 +23,15 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Point_kd_tree::Point_kd_tree(const std:
   const std::uint32_t n = static_cast<std::uint32_t>(points.size());
   if(n == 0)
     return;
+  m_points = &points;
   m_index.resize(n);
   for(std::uint32_t i = 0; i < n; ++i)
     m_index[i] = i;
-  // the coordinates by point index while building, then in leaf order
-  m_coordinates.resize(3 * std::size_t(n));
-  for(std::uint32_t i = 0; i < n; ++i)
-    for(int d = 0; d < 3; ++d)
-      m_coordinates[3 * std::size_t(i) + d] = points[i][d];
   m_nodes.reserve(2 * (std::size_t(n) / LEAF_SIZE + 1));
   build(0, n);
-  std::vector<double> ordered(m_coordinates.size());
-  m_position.resize(n);
-  for(std::uint32_t e = 0; e < n; ++e)
-  {
-    std::copy_n(&m_coordinates[3 * std::size_t(m_index[e])], 3, &ordered[3 * std::size_t(e)]);
-    m_position[m_index[e]] = e;
-  }
-  m_coordinates.swap(ordered);
 }
 
-// Builds the node of positions [begin, end) (m_coordinates still by point index) and returns it.
+// Builds the node of positions [begin, end) and returns it.
 CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION std::uint32_t Point_kd_tree::build(std::uint32_t begin, std::uint32_t end)
 {
   const std::uint32_t id = static_cast<std::uint32_t>(m_nodes.size());
@@ -59,7 +47,7 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION std::uint32_t Point_kd_tree::build(std:
   for(std::uint32_t e = begin; e < end; ++e)
     for(int d = 0; d < 3; ++d)
     {
-      const double c = m_coordinates[3 * std::size_t(m_index[e]) + d];
+      const double c = (*m_points)[m_index[e]][d];
       low[d] = (std::min)(low[d], c);
       high[d] = (std::max)(high[d], c);
     }
@@ -68,8 +56,8 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION std::uint32_t Point_kd_tree::build(std:
     if(high[d] - low[d] > high[axis] - low[axis])
       axis = d;
   const std::uint32_t middle = begin + (end - begin) / 2;
-  const double* coordinates = m_coordinates.data();
-  auto coordinate = [coordinates, axis](std::uint32_t a) { return coordinates[3 * std::size_t(a) + axis]; };
+  const std::vector<Double_point>& points = *m_points;
+  auto coordinate = [&points, axis](std::uint32_t a) { return points[a][axis]; };
   std::nth_element(m_index.begin() + begin, m_index.begin() + middle, m_index.begin() + end,
                    [&coordinate](std::uint32_t a, std::uint32_t b) {
                      const double ca = coordinate(a), cb = coordinate(b);
@@ -125,7 +113,8 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest(std::uint32
   k = (std::min)(k, n == 0 ? std::size_t(0) : n - 1);
   if(k == 0)
     return;
-  const double* q = &m_coordinates[3 * std::size_t(m_position[i])];
+  const Double_point& query = (*m_points)[i];
+  const double q[3] = {query.x(), query.y(), query.z()};
   double gap[3] = {0., 0., 0.};
   if(k <= SORTED_INSERTION_K)
   {
@@ -135,8 +124,8 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest(std::uint32
     auto visit = [&](std::uint32_t begin, std::uint32_t end) {
       for(std::uint32_t e = begin; e < end; ++e)
       {
-        const double* p = &m_coordinates[3 * std::size_t(e)];
-        const double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+        const Double_point& p = (*m_points)[m_index[e]];
+        const double dx = p.x() - q[0], dy = p.y() - q[1], dz = p.z() - q[2];
         const double d2 = dx * dx + dy * dy + dz * dz;
         if(d2 > threshold || m_index[e] == i)
           continue;
@@ -179,8 +168,8 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest(std::uint32
   auto visit = [&](std::uint32_t begin, std::uint32_t end) {
     for(std::uint32_t e = begin; e < end; ++e)
     {
-      const double* p = &m_coordinates[3 * std::size_t(e)];
-      const double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+      const Double_point& p = (*m_points)[m_index[e]];
+      const double dx = p.x() - q[0], dy = p.y() - q[1], dz = p.z() - q[2];
       const double d2 = dx * dx + dy * dy + dz * dz;
       if(d2 <= threshold && m_index[e] != i)
         result.push_back(Neighbor{m_index[e], d2});
@@ -206,12 +195,13 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::ball(std::uint32_t 
   result.clear();
   if(m_index.empty())
     return;
-  const double* q = &m_coordinates[3 * std::size_t(m_position[i])];
+  const Double_point& query = (*m_points)[i];
+  const double q[3] = {query.x(), query.y(), query.z()};
   auto visit = [&](std::uint32_t begin, std::uint32_t end) {
     for(std::uint32_t e = begin; e < end; ++e)
     {
-      const double* p = &m_coordinates[3 * std::size_t(e)];
-      const double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+      const Double_point& p = (*m_points)[m_index[e]];
+      const double dx = p.x() - q[0], dy = p.y() - q[1], dz = p.z() - q[2];
       const double d2 = dx * dx + dy * dy + dz * dz;
       if(d2 <= squared_radius && m_index[e] != i)
         result.push_back(Neighbor{m_index[e], d2});
