@@ -930,6 +930,47 @@ TEST_CASE("the kd-tree's k nearest and balls equal brute force", "[neighbors]")
   CHECK(checked_balls == 4 * ((copy.size() + 6) / 7));
 }
 
+TEST_CASE("the kd-tree on a single point, on a pair and on a hundred copies of one point", "[neighbors][bad-input]")
+{
+  std::vector<SN::internal::Double_point> one{{1., 2., 3.}};
+  const SN::internal::Neighbor_query single(one);
+  std::vector<SN::internal::Neighbor> found{{7, 1.}};
+  single.query(0, 5, found);
+  CHECK(found.empty());
+  single.query_ball(0, 10., found);
+  CHECK(found.empty());
+
+  std::vector<SN::internal::Double_point> two{{0., 0., 0.}, {3., 4., 0.}};
+  const SN::internal::Neighbor_query pair(two);
+  pair.query(1, 3, found);
+  REQUIRE(found.size() == 1);
+  CHECK(found[0].index == 0);
+  CHECK(found[0].squared_distance == 25.);
+  pair.query_ball(0, 5., found); // on the boundary: kept
+  CHECK(found.size() == 1);
+  pair.query_ball(0, std::nextafter(5., 0.), found);
+  CHECK(found.empty());
+
+  // every distance 0: the neighbors are the other indices in order, whatever the tree's splits
+  std::vector<SN::internal::Double_point> copies(100, SN::internal::Double_point(0.5, -2., 7.));
+  const SN::internal::Neighbor_query same(copies);
+  for(unsigned int k : {1u, 10u, 40u, 99u, 150u})
+    for(std::uint32_t i : {0u, 37u, 99u})
+    {
+      same.query(i, k, found);
+      REQUIRE(found.size() == std::min(k, 99u));
+      std::uint32_t expected = 0;
+      for(const auto& n : found)
+      {
+        if(expected == i)
+          ++expected;
+        CHECK(n.index == expected);
+        CHECK(n.squared_distance == 0.);
+        ++expected;
+      }
+    }
+}
+
 TEST_CASE("compute_k_nearest_neighbors: SPEC §2's rows, shared by several calls", "[neighborhoods]")
 {
   // a grid: many ties at equal distances, decided by index
