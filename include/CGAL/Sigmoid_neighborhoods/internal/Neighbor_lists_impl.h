@@ -13,8 +13,8 @@
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
 #include <algorithm>
-#include <limits>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace CGAL {

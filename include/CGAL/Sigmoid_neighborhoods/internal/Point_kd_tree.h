@@ -35,10 +35,10 @@ inline bool is_nearer(const Neighbor& x, const Neighbor& y)
   return x.squared_distance < y.squared_distance || (x.squared_distance == y.squared_distance && x.index < y.index);
 }
 
-// Sorts by is_nearer(). A k-NN result (a few dozen neighbors, in the tree's heap order) is placed
-// by rank, each neighbor's rank the number of neighbors nearer than it: comparisons without
-// branches, where std::sort's mispredicted ones took a quarter of the query's time on a scan.
-// Indices are distinct, so the ranks are a permutation.
+// Sorts by is_nearer(). Up to 64 neighbors (a k-NN result or a ball, unordered) are placed by
+// rank, each neighbor's rank the number of neighbors nearer than it: comparisons without branches,
+// where std::sort's mispredicted ones took a quarter of the query's time on a scan. Indices are
+// distinct, so the ranks are a permutation.
 inline void sort_by_nearness(std::vector<Neighbor>& neighbors)
 {
   constexpr std::size_t RANKED = 64;
