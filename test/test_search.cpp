@@ -909,7 +909,7 @@ TEST_CASE("the kd-tree's k nearest and balls equal brute force", "[neighbors]")
     copy.emplace_back(p.first.x(), p.first.y(), p.first.z());
   const SN::internal::Neighbor_query query(copy);
   std::vector<SN::internal::Neighbor> found;
-  std::size_t checked_balls = 0;
+  std::size_t on_boundary = 0; // neighbors at exactly the radius: the `<=` of the ball decided them
   for(double radius : {0., 1., 2., 2.5}) // the grid's distances 1 and 2 fall on the ball's boundary
     for(std::uint32_t i = 0; i < copy.size(); i += 7)
     {
@@ -920,14 +920,15 @@ TEST_CASE("the kd-tree's k nearest and balls equal brute force", "[neighbors]")
         const double d2 = CGAL::squared_distance(points[i].first, points[j].first);
         if(j != i && d2 <= radius * radius)
           expected.emplace_back(d2, j);
+        if(j != i && radius > 0. && d2 == radius * radius)
+          ++on_boundary;
       }
       std::sort(expected.begin(), expected.end());
       REQUIRE(found.size() == expected.size());
       for(std::size_t t = 0; t < found.size(); ++t)
         REQUIRE(found[t].index == expected[t].second);
-      ++checked_balls;
     }
-  CHECK(checked_balls == 4 * ((copy.size() + 6) / 7));
+  CHECK(on_boundary > 0);
 }
 
 TEST_CASE("the kd-tree on a single point, on a pair and on a hundred copies of one point", "[neighbors][bad-input]")

@@ -96,13 +96,6 @@ public:
   void nearest(std::uint32_t i, std::size_t k, std::vector<Neighbor>& result,
                double squared_bound = (std::numeric_limits<double>::infinity)()) const;
 
-  // The squared distance between points `i` and `j`, computed as the queries compute it.
-  double squared_distance(std::uint32_t i, std::uint32_t j) const
-  {
-    const Double_point &p = (*m_points)[i], &q = (*m_points)[j];
-    const double dx = q.x() - p.x(), dy = q.y() - p.y(), dz = q.z() - p.z();
-    return dx * dx + dy * dy + dz * dz;
-  }
 
   // The points j != i with squared distance to point `i` at most `squared_radius`, ordered by
   // is_nearer().
@@ -123,6 +116,13 @@ private:
   };
 
   std::uint32_t build(std::uint32_t begin, std::uint32_t end);
+  // the squared distance from q to the point at position e, as every query computes it
+  double squared_distance_at(std::uint32_t e, const double* q) const
+  {
+    const Double_point& p = (*m_points)[m_index[e]];
+    const double dx = p.x() - q[0], dy = p.y() - q[1], dz = p.z() - q[2];
+    return dx * dx + dy * dy + dz * dz;
+  }
   template <typename Visit_leaf, typename Bound>
   void descend(std::uint32_t node, const double* q, double* gap, const Visit_leaf& visit, const Bound& bound) const;
 

@@ -124,9 +124,7 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest(std::uint32
     auto visit = [&](std::uint32_t begin, std::uint32_t end) {
       for(std::uint32_t e = begin; e < end; ++e)
       {
-        const Double_point& p = (*m_points)[m_index[e]];
-        const double dx = p.x() - q[0], dy = p.y() - q[1], dz = p.z() - q[2];
-        const double d2 = dx * dx + dy * dy + dz * dz;
+        const double d2 = squared_distance_at(e, q);
         if(d2 > threshold || m_index[e] == i)
           continue;
         const Neighbor candidate{m_index[e], d2};
@@ -168,9 +166,7 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest(std::uint32
   auto visit = [&](std::uint32_t begin, std::uint32_t end) {
     for(std::uint32_t e = begin; e < end; ++e)
     {
-      const Double_point& p = (*m_points)[m_index[e]];
-      const double dx = p.x() - q[0], dy = p.y() - q[1], dz = p.z() - q[2];
-      const double d2 = dx * dx + dy * dy + dz * dz;
+      const double d2 = squared_distance_at(e, q);
       if(d2 <= threshold && m_index[e] != i)
         result.push_back(Neighbor{m_index[e], d2});
     }
@@ -200,9 +196,7 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::ball(std::uint32_t 
   auto visit = [&](std::uint32_t begin, std::uint32_t end) {
     for(std::uint32_t e = begin; e < end; ++e)
     {
-      const Double_point& p = (*m_points)[m_index[e]];
-      const double dx = p.x() - q[0], dy = p.y() - q[1], dz = p.z() - q[2];
-      const double d2 = dx * dx + dy * dy + dz * dz;
+      const double d2 = squared_distance_at(e, q);
       if(d2 <= squared_radius && m_index[e] != i)
         result.push_back(Neighbor{m_index[e], d2});
     }
