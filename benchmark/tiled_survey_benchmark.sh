@@ -8,11 +8,18 @@
 # computed alone in memory, J at once, for the cost of the halo. Resumable: a tile whose
 # NAME.tile.json (written last) is in the output folder is not computed again.
 #
-# usage: benchmark/tiled_survey_benchmark.sh [--points N] [--tile-size S] [--jobs J] [--threads T]
+# usage: benchmark/tiled_survey_benchmark.sh [--points N] [--tile-size S] [--jobs J|auto] [--threads T|auto]
 #          [--a-grid ANGLES] [--b-grid ANGLES] [--halo WIDTH] [--seed SEED] [--work DIR] [--discard-csv]
+#          [--skip-alone]
 #   --points: about N points (default 2e6); --tile-size: S metres (default 180): the survey has m x m
 #       tiles, m the nearest to sqrt(N / 15) / S (see generate_survey --help)
-#   --jobs, --threads: J jobs at once (default 2), T threads each (default 1)
+#   --jobs, --threads: J jobs at once, T threads each (default auto: as many one-thread jobs as the
+#       machine has cores, tiles and memory for, about 400 bytes per point of a tile and its halo, the
+#       cores left over shared among them as threads; a job on one thread wastes no time waiting on
+#       the others, so jobs come first)
+#   --skip-alone: no tiles alone in memory after the survey
+# The jobs run under GNU parallel, or under xargs -P where it is missing (the same jobs; a failed tile
+# then stops no other, and the script reports it at the end).
 #   --a-grid, --b-grid, --halo: passed to optimal (--halo to the tiles' jobs alone: the first halo,
 #       instead of the one from the tile's density; one too narrow costs a second reading)
 #   --work: the folder of the survey and the outputs (default survey-benchmark); the survey is
@@ -29,7 +36,7 @@ set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 tool=${SIGMOID_NEIGHBORHOODS:-$here/../build/tools/sigmoid-neighborhoods/sigmoid-neighborhoods}
 generator=${GENERATE_SURVEY:-$here/../build/benchmark/generate_survey}
-points=2e6 tile_size=180 jobs=2 threads=1 seed=1 work=survey-benchmark discard_csv=0
+points=2e6 tile_size=180 jobs=auto threads=auto seed=1 work=survey-benchmark discard_csv=0 skip_alone=0
 grid=() halo=()
 usage() { sed -n '/^# usage:/,/^# next to this script/p' "$0" | sed 's/^# \{0,1\}//'; exit "$1"; }
 while [ $# -gt 0 ]; do
@@ -43,6 +50,7 @@ while [ $# -gt 0 ]; do
     --a-grid|--b-grid) grid+=("$1" "$2"); shift 2 ;;
     --halo) halo=("$1" "$2"); shift 2 ;;
     --discard-csv) discard_csv=1; shift ;;
+    --skip-alone) skip_alone=1; shift ;;
     -h|--help) usage 0 ;;
     *) echo "tiled_survey_benchmark.sh: unknown argument $1" >&2; usage 2 ;;
   esac
@@ -50,7 +58,6 @@ done
 for program in "$tool" "$generator"; do
   [ -x "$program" ] || { echo "tiled_survey_benchmark.sh: $program not found (build the project)" >&2; exit 2; }
 done
-command -v parallel > /dev/null || { echo "tiled_survey_benchmark.sh: needs GNU parallel" >&2; exit 2; }
 
 # The survey, written once: generated aside, then renamed, so that a folder there is complete.
 mkdir -p "$work"
@@ -64,6 +71,18 @@ fi
 tiles=$(wc -l < "$work/catalog.csv")
 survey_points=$(awk -F, '{ s += $2 } END { print s }' "$work/catalog.csv")
 survey_bytes=$(du -sb "$survey" | cut -f1)
+
+# Jobs x threads for this machine: one-thread jobs on every core, as many as the tiles and the
+# memory allow; the cores left over go to them as threads.
+cores=$(nproc)
+if [ "$jobs" = auto ]; then
+  largest_tile=$(awk -F, '$2 > m { m = $2 } END { print m + 0 }' "$work/catalog.csv")
+  available_kb=$(awk '/^MemAvailable/ { print $2 }' /proc/meminfo)
+  by_memory=$(awk -v a="$available_kb" -v n="$largest_tile" 'BEGIN { j = int(a * 1024 / (400 * n * 1.1)); print j < 1 ? 1 : j }')
+  jobs=$(printf '%s\n' "$cores" "$tiles" "$by_memory" | sort -n | head -1)
+fi
+[ "$threads" != auto ] || threads=$(( cores / jobs > 0 ? cores / jobs : 1 ))
+if command -v parallel > /dev/null; then launcher=parallel; else launcher=xargs; fi
 
 # Outputs per setting: the grids change the rows, the threads and the first halo only the times.
 tag=$(printf '%s ' "${grid[@]+"${grid[@]}"}" "${halo[@]+"${halo[@]}"}" | cksum | cut -d' ' -f1)
@@ -114,12 +133,20 @@ export tool survey out threads discard_csv
 export grid_text="${grid[*]+"${grid[*]}"}" halo_text="${halo[*]+"${halo[*]}"}"
 
 done_before=$(cut -d, -f1 "$work/catalog.csv" | while read -r name; do [ ! -e "$out/$name.tile.json" ] || echo; done | wc -l)
-echo "survey: $survey_points points in $tiles tiles ($survey_bytes bytes), $done_before tiles already done; $jobs jobs of $threads threads" >&2
+echo "survey: $survey_points points in $tiles tiles ($survey_bytes bytes), $done_before tiles already done; $jobs jobs of $threads threads on $cores cores ($launcher)" >&2
 start=$(date +%s.%N)
-# GNU parallel runs the function in a new bash: the options travel as text (they have no spaces).
-"$tool" catalog list "$survey" --names |
-  parallel -j "$jobs" --halt now,fail=1 --joblog "$out/joblog.txt" 'grid=($grid_text) halo=($halo_text); run_tile {}' ||
-  { echo "tiled_survey_benchmark.sh: a tile failed: see $out/joblog.txt and its NAME.log" >&2; exit 1; }
+# GNU parallel or xargs runs the function in a new bash: the options travel as text (they have no spaces).
+# Without GNU parallel, the same by hand: sigmoid-neighborhoods catalog list SURVEY --names |
+#   xargs -P J -I{} sigmoid-neighborhoods optimal --catalog SURVEY --tile {} -o OUT/{}.csv --threads T
+if [ "$launcher" = parallel ]; then
+  "$tool" catalog list "$survey" --names |
+    parallel -j "$jobs" --halt now,fail=1 --joblog "$out/joblog.txt" 'grid=($grid_text) halo=($halo_text); run_tile {}' ||
+    { echo "tiled_survey_benchmark.sh: a tile failed: see $out/joblog.txt and its NAME.log" >&2; exit 1; }
+else
+  "$tool" catalog list "$survey" --names |
+    xargs -P "$jobs" -I{} bash -c 'grid=($grid_text) halo=($halo_text); run_tile "$1"' _ {} ||
+    { echo "tiled_survey_benchmark.sh: a tile failed: see its NAME.log in $out" >&2; exit 1; }
+fi
 wall=$(seconds_since "$start")
 
 # The table: every tile's report, this run's wall.
@@ -135,6 +162,7 @@ csv_bytes=$(find "$out" -name '*.csv' -printf '%s\n' | awk '{ s += $1 } END { pr
 
 # Tiles alone, in memory, J of them at once as the tile jobs ran (the same load on the machine):
 # the middle ones of the catalog.
+if [ "$skip_alone" -eq 0 ]; then
 first=$(( (tiles + 1) / 2 ))
 sed -n "${first},$((first + jobs - 1))p" "$work/catalog.csv" > "$work/alone.csv"
 run_alone() {
@@ -145,8 +173,8 @@ run_alone() {
 }
 export -f run_alone
 export work
-awk -F, '{ print $1; path = $7; for(i = 8; i <= NF; ++i) path = path "," $i; print path }' "$work/alone.csv" |
-  parallel -j "$jobs" -N 2 --halt now,fail=1 'grid=($grid_text); run_alone {1} {2}' ||
+awk -F, '{ path = $7; for(i = 8; i <= NF; ++i) path = path "," $i; print $1 "\t" path }' "$work/alone.csv" |
+  xargs -P "$jobs" -n 1 -d '\n' bash -c 'grid=($grid_text); IFS=$(printf "\t") read -r n p <<< "$1"; run_alone "$n" "$p"' _ ||
   { echo "tiled_survey_benchmark.sh: a tile alone failed: see $work/alone_NAME.log" >&2; exit 1; }
 alone_names= alone_points=0 alone_seconds=0 alone_cpu=0 alone_kb=0
 while IFS=, read -r name count _; do
@@ -158,18 +186,21 @@ while IFS=, read -r name count _; do
   [ "$kb" -le "$alone_kb" ] || alone_kb=$kb
 done < "$work/alone.csv"
 alone_tiles=$(wc -l < "$work/alone.csv")
+fi
 
 per_point() { awk -v s="$1" -v n="$2" 'BEGIN { if(s > 0) printf "%.2f", 1e6 * s / n; else printf "n/a" }'; } # us
 {
   echo
-  echo "| run | tiles | points | jobs x threads | wall (s) | wall per point (us) | job wall per point (us) | job CPU per point (us) | largest peak RSS of a job (MiB) |"
-  echo "|---|---:|---:|---|---:|---:|---:|---:|---:|"
-  printf '| %s%s | %d | %d | %d x %d | %.1f | %s | %s | %s | %d (%s) |\n' "$(basename "$survey")" \
+  echo "| run | tiles | points | jobs x threads (cores) | wall (s) | points per second | wall per point (us) | job wall per point (us) | job CPU per point (us) | largest peak RSS of a job (MiB) |"
+  echo "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|"
+  printf '| %s%s | %d | %d | %d x %d (%d) | %.1f | %s | %s | %s | %s | %d (%s) |\n' "$(basename "$survey")" \
     "$([ "$done_before" -eq 0 ] || echo " (resumed: $done_before tiles from earlier runs)")" "$tiles" "$survey_points" \
-    "$jobs" "$threads" "$wall" "$(per_point "$wall" "$survey_points")" "$(per_point "$job_seconds" "$survey_points")" \
+    "$jobs" "$threads" "$cores" "$wall" "$(awk -v n="$survey_points" -v s="$wall" 'BEGIN { printf "%.0f", n / s }')" \
+    "$(per_point "$wall" "$survey_points")" "$(per_point "$job_seconds" "$survey_points")" \
     "$(per_point "$cpu_seconds" "$survey_points")" $((peak_kb / 1024)) "$peak_tile"
-  printf '| tiles alone, in memory: %s | %d | %d | %d x %d | | | %s | %s | %d |\n' "$alone_names" "$alone_tiles" \
-    "$alone_points" "$jobs" "$threads" "$(per_point "$alone_seconds" "$alone_points")" \
+  [ "$skip_alone" -eq 1 ] ||
+  printf '| tiles alone, in memory: %s | %d | %d | %d x %d (%d) | | | | %s | %s | %d |\n' "$alone_names" "$alone_tiles" \
+    "$alone_points" "$jobs" "$threads" "$cores" "$(per_point "$alone_seconds" "$alone_points")" \
     "$(per_point "$alone_cpu" "$alone_points")" $((alone_kb / 1024))
   echo
   echo "survey files: $survey_bytes bytes; CSV outputs kept: ${csv_bytes:-0} bytes in $out"

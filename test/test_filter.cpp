@@ -27,10 +27,13 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <numeric>
 #include <random>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -741,6 +744,106 @@ TEST_CASE("orient_normals_by_spanning_forest after estimate_normals: a closed sp
   SN::estimate_normals<CGAL::Sequential_tag>(points, 12, maps());
   CHECK(SN::orient_normals_by_spanning_forest<CGAL::Sequential_tag>(points, 12, maps()) == 1);
   CHECK(inward_normals(points, 2000) == 0);
+}
+
+namespace {
+
+// The oriented normals that SPEC's spanning forest gives, written plainly: Kruskal's algorithm on the
+// edges sorted by (weight, lower index, higher index), each tree walked from its highest point.
+std::vector<Vector> kruskal_oriented_normals(const Points& points, unsigned int k)
+{
+  const std::size_t n = points.size();
+  std::vector<std::uint32_t> indices;
+  std::vector<std::size_t> offsets;
+  SN::compute_k_nearest_neighbors<CGAL::Sequential_tag>(points, k, indices, offsets, maps());
+  std::vector<Eigen::Vector3d> normal(n);
+  for(std::size_t i = 0; i < n; ++i)
+    normal[i] = Eigen::Vector3d(points[i].second.x(), points[i].second.y(), points[i].second.z());
+  std::vector<std::tuple<double, std::uint32_t, std::uint32_t>> edges;
+  for(std::uint32_t i = 0; i < n; ++i)
+    for(std::size_t e = offsets[i]; e < offsets[i] + k; ++e)
+    {
+      const std::uint32_t j = indices[e];
+      edges.emplace_back((std::max)(0., 1. - std::abs(normal[i].dot(normal[j]))), (std::min)(i, j), (std::max)(i, j));
+    }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  std::vector<std::uint32_t> root(n);
+  std::iota(root.begin(), root.end(), 0u);
+  std::function<std::uint32_t(std::uint32_t)> find = [&](std::uint32_t v) { return root[v] == v ? v : root[v] = find(root[v]); };
+  std::vector<std::vector<std::uint32_t>> tree(n);
+  for(const auto& e : edges)
+  {
+    const std::uint32_t a = find(std::get<1>(e)), b = find(std::get<2>(e));
+    if(a == b)
+      continue;
+    root[a] = b;
+    tree[std::get<1>(e)].push_back(std::get<2>(e));
+    tree[std::get<2>(e)].push_back(std::get<1>(e));
+  }
+  std::vector<std::uint32_t> order(n);
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t i, std::uint32_t j) { return points[i].first.z() > points[j].first.z(); });
+  std::vector<bool> done(n, false);
+  for(std::uint32_t seed : order)
+  {
+    if(done[seed])
+      continue;
+    if(normal[seed].z() < 0.)
+      normal[seed] = -normal[seed];
+    done[seed] = true;
+    std::vector<std::uint32_t> queue{seed};
+    for(std::size_t q = 0; q < queue.size(); ++q)
+      for(std::uint32_t v : tree[queue[q]])
+        if(!done[v])
+        {
+          done[v] = true;
+          if(normal[v].dot(normal[queue[q]]) < 0.)
+            normal[v] = -normal[v];
+          queue.push_back(v);
+        }
+  }
+  std::vector<Vector> result;
+  for(const auto& v : normal)
+    result.emplace_back(v.x(), v.y(), v.z());
+  return result;
+}
+
+} // namespace
+
+TEST_CASE("orient_normals_by_spanning_forest: the forest of the total order, on any number of threads", "[normals][orientation]")
+{
+  // a grid folded at x = 15 (distances and weights tied everywhere: weight 0 on each flat side, one
+  // weight across the fold), a few tilted normals, signs at random, and a second sheet apart
+  std::mt19937_64 rng(11);
+  std::bernoulli_distribution flip(0.5), tilt(0.1);
+  std::uniform_real_distribution<double> small(-0.2, 0.2);
+  Points points;
+  for(int sheet = 0; sheet < 2; ++sheet)
+    for(int x = 0; x < 30; ++x)
+      for(int y = 0; y < 25; ++y)
+      {
+        const double z = x > 15 ? double(x - 15) : 0.;
+        Eigen::Vector3d n = x > 15 ? Eigen::Vector3d(-1., 0., 1.).normalized() : Eigen::Vector3d(0., 0., 1.);
+        if(tilt(rng))
+          n = (n + Eigen::Vector3d(small(rng), small(rng), small(rng))).normalized();
+        if(flip(rng))
+          n = -n;
+        points.emplace_back(Point(x, y + 100. * sheet, z), Vector(n.x(), n.y(), n.z()));
+      }
+  const std::vector<Vector> expected = kruskal_oriented_normals(points, 8);
+  for(unsigned int threads : {1u, 2u, 3u})
+  {
+    Points oriented = points;
+    CHECK(SN::orient_normals_by_spanning_forest<SN::Parallel_if_available_tag>(
+            oriented, 8, SNP::number_of_threads(threads, maps())) == 2);
+    CHECK(normals_of(oriented) == expected);
+  }
+  // the flat parts face +z, the fold's side faces its tilt
+  Points oriented = points;
+  SN::orient_normals_by_spanning_forest<CGAL::Sequential_tag>(oriented, 8, maps());
+  CHECK(oriented[0].second.z() > 0.);
+  CHECK(oriented[29 * 25].second.z() > 0.);
 }
 
 TEST_CASE("orient_normals_towards_viewpoint: every normal faces the scanner", "[normals][orientation]")

@@ -130,7 +130,7 @@ void run_search(const SN::Oriented_point_set& model, const K_range& k, SN::Baryc
     SN_FUZZ_CHECK(r.error() <= r.error_equal + 1e-12);
   }
   // The command's CSV rows, failures included.
-  std::ostringstream csv;
+  sigmoid_tool::Text_rows csv;
   for(std::size_t i = 0; i < n; ++i)
     sigmoid_tool::write_optimal_row(csv, points[i], normals[i], records[i]);
 }

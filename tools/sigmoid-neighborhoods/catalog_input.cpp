@@ -151,7 +151,7 @@ std::string settings_text(const Arguments& args)
 }
 
 void write_tile_description(const std::string& output, const std::string& command, const Arguments& args,
-                                   const Input_points& in, double seconds,
+                                   const Input_points& in, const Phase_times& times,
                                    const std::string& more_settings)
 {
   if(!in.is_tile)
@@ -169,7 +169,8 @@ void write_tile_description(const std::string& output, const std::string& comman
   d["readings"] = in.halo.readings;
   d["seam_duplicates"] = in.halo.seam_duplicates;
   d["exact"] = in.halo.exact;
-  d["seconds"] = seconds;
+  d["seconds"] = times.total();
+  d["phases"] = times.json();
   write_file_atomically(tile_description_path(output), [&](std::ofstream& out) { out << d.dump(2) << '\n'; });
 }
 } // namespace sigmoid_tool

@@ -9,6 +9,7 @@
 
 #include "command_line.h"
 #include "model_input.h"
+#include "phase_times.h"
 
 #include <CGAL/Sigmoid_neighborhoods/IO/read_tile_catalog.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_tile_with_halo.h>
@@ -81,8 +82,9 @@ std::string settings_text(const Arguments& args);
 
 // What `catalog merge` checks of a tile's output: which tile, of which catalog, computed how, rows.
 // `more_settings`: what else decides the rows, e.g. a model read from a file.
+// `times`: the run's wall time ("seconds") and its phases ("phases")
 void write_tile_description(const std::string& output, const std::string& command, const Arguments& args,
-                                   const Input_points& in, double seconds,
+                                   const Input_points& in, const Phase_times& times,
                                    const std::string& more_settings = std::string());
 
 } // namespace sigmoid_tool

@@ -8,6 +8,7 @@
 #include "classification/confusion.h"
 #include "classification/label_mapping.h"
 #include "command_line.h"
+#include "phase_times.h"
 
 #include <cstddef>
 #include <iostream>
@@ -36,20 +37,25 @@ int run_classify_evaluate(int argc, char** argv)
   settings.features.threads = settings.normals.threads = read_threads(args);
   const double graphcut = read_graphcut(args);
   Confusion confusion(settings.labels.names.size());
+  Phase_times times;
   for(std::size_t f = 1; f < args.positional().size(); ++f)
   {
     const Featured_file file =
       read_and_feature(args.positional()[f], settings.labels, true, settings.normals, settings.features);
+    times.end_reading(file.model);
+    times.move("reading", "features", file.seconds_features);
     const Prediction p = predict(file, settings, forest_bytes, nullptr, graphcut);
+    times.end("forest");
     for(std::size_t i = 0; i < p.classes.size(); ++i)
       confusion.add(file.truth[i], p.classes[i]);
   }
   end_progress();
   write_evaluation(output, confusion, settings.labels, "Classification of " + std::to_string(args.positional().size() - 1) +
                                                          " file(s) by " + model_path);
+  times.end("writing");
   std::cerr << output << ": overall accuracy " << percent(confusion.overall_accuracy()) << ", mean F1 "
             << fixed3(confusion.mean_f1()) << ", mean IoU " << fixed3(confusion.mean_iou()) << " on "
-            << confusion.total() << " points\n";
+            << confusion.total() << " points, " << number_fixed(times.total(), 2) << " s (" << times.text() << ")\n";
   return EXIT_OK;
 }
 

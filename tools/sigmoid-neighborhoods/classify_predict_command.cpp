@@ -8,8 +8,8 @@
 #include "classification/feature_options.h"
 #include "catalog_input.h"
 #include "command_line.h"
+#include "phase_times.h"
 
-#include <CGAL/Real_timer.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -70,8 +70,7 @@ int run_classify_predict(int argc, char** argv)
   const double graphcut = read_graphcut(args);
   if(args.has("--tile"))
     refuse_inexact_tile(settings, graphcut);
-  CGAL::Real_timer timer;
-  timer.start();
+  Phase_times times;
   progress("reading");
   // the normals' neighbor rows kept for the features; a tile's halo holds them and the height cells,
   // and is widened until the pyramid's representatives and rows near the tile are checked to be the union's
@@ -96,6 +95,7 @@ int run_classify_predict(int argc, char** argv)
     minimum_halo = std::max(needed, 1.5 * in.halo.halo_width);
   }
   in.halo.readings = readings;
+  times.end_reading(in.model);
   if(in.is_tile && in.first == in.last)
     throw Usage_error(in.source + ": tile " + in.tile_name + " has no point of its own (empty, or all on an earlier "
                       "tile's seam): nothing to predict");
@@ -103,10 +103,12 @@ int run_classify_predict(int argc, char** argv)
   file.path = in.source;
   file.model = std::move(in.model);
   add_features(file, settings.labels, false, settings.features);
+  times.end("features");
   const Prediction p = predict(file, settings, forest_bytes, nullptr, graphcut);
+  times.end("forest");
   write_prediction_ply(output, file, p, settings.labels, in.first, in.last);
-  timer.stop();
-  write_tile_description(output, "classify predict", args, in, timer.time(), model);
+  times.end("writing");
+  write_tile_description(output, "classify predict", args, in, times, model);
   end_progress();
   std::vector<std::size_t> counts(settings.labels.names.size(), 0);
   for(std::size_t i = in.first; i < in.last; ++i)
@@ -115,8 +117,7 @@ int run_classify_predict(int argc, char** argv)
   std::cerr << output << ": " << in.last - in.first << " points" << halo_description(in) << ":";
   for(std::size_t c = 0; c < counts.size(); ++c)
     std::cerr << (c ? ", " : " ") << settings.labels.names[c] << ' ' << counts[c];
-  std::cerr << "; features " << number_fixed(file.seconds_features, 1) << " s, classification "
-            << number_fixed(p.seconds, 1) << " s\n";
+  std::cerr << "; " << number_fixed(times.total(), 2) << " s (" << times.text() << ")\n";
   return EXIT_OK;
 }
 

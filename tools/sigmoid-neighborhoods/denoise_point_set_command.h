@@ -10,12 +10,12 @@
 #include "command_line.h"
 #include "filter_command.h"
 #include "model_input.h"
+#include "phase_times.h"
 #include "ply_output.h"
 
 #include <CGAL/Sigmoid_neighborhoods/denoise_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_polygon_mesh.h>
 
-#include <CGAL/Real_timer.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/OBJ.h>
 #include <CGAL/boost/graph/IO/OFF.h>
@@ -154,12 +154,12 @@ inline int run_denoise_point_set(int argc, char** argv)
   const SN::Normal_options normal_options = read_normal_options(args);
   const Iteration_progress progress(input);
 
-  CGAL::Real_timer timer;
-  timer.start();
+  Phase_times times;
   SN::Point_set_denoising_summary summary;
   std::string description;
   const SN::Oriented_point_set model =
     read_input(input, [&] { return SN::read_oriented_point_set(input, normal_options); });
+  times.end_reading(model);
   if(is_mesh_format(ext) && !model.is_mesh)
     throw Usage_error(input + ": a point set cannot be written as a mesh (." + ext + "): use .xyz, .pwn or .ply");
   if(model.is_mesh && ext != "xyz" && ext != "pwn")
@@ -180,6 +180,7 @@ inline int run_denoise_point_set(int argc, char** argv)
       throw Usage_error(input + ": " + e.what());
     }
     progress.clear();
+    times.end("denoising");
     description = std::to_string(mesh.number_of_vertices()) + " vertices (mesh vertex normals, " +
                   std::to_string(summary.mesh.merged_duplicates) + " merged duplicates)";
     write_file_atomically(output, [&](std::ofstream& out) {
@@ -217,19 +218,20 @@ inline int run_denoise_point_set(int argc, char** argv)
       throw Usage_error(input + ": " + e.what());
     }
     progress.clear();
+    times.end("denoising");
     description = model_description(model);
     SN::Oriented_point_set denoised = model;
     denoised.points = points;
     if(ext == "ply")
       write_file_atomically(output, [&](std::ofstream& out) { write_filtered_ply(out, denoised, normals); }, true);
     else
-      write_file_atomically(output, [&](std::ofstream& out) { write_filtered_xyz(out, denoised, normals); });
+      write_file_atomically(output, [&](std::ofstream& out) { write_filtered_xyz(out, denoised, normals, options.threads); });
   }
-  timer.stop();
+  times.end("writing");
   char seconds[64];
-  std::snprintf(seconds, sizeof(seconds), ", %.2f s", timer.time());
+  std::snprintf(seconds, sizeof(seconds), ", %.2f s", times.total());
   std::cerr << input << ": " << description << (options.adaptive ? ", adaptive" : "") << ", "
-            << denoising_summary_text(summary) << seconds << '\n';
+            << denoising_summary_text(summary) << seconds << " (" << times.text() << ")\n";
   return EXIT_OK;
 }
 

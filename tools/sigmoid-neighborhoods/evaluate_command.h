@@ -172,22 +172,18 @@ std::vector<SN::Point_evaluation> evaluate_model(const SN::Oriented_point_set& m
 
 // The optimal CSV's columns, then the other weightings of the evaluation.
 inline void write_evaluation_csv(std::ostream& out, const SN::Oriented_point_set& model,
-                                 const std::vector<SN::Point_evaluation>& evaluations)
+                                 const std::vector<SN::Point_evaluation>& evaluations, unsigned int threads)
 {
   out << OPTIMAL_CSV_HEADER << ",label_equal,error_cut_off,k_cut_off,label_cut_off,error_fixed_k,label_fixed_k\n";
-  for(std::size_t i = 0; i < evaluations.size(); ++i)
-  {
+  write_text_rows(out, 0, evaluations.size(), threads, [&](Text_rows& rows, std::size_t i) {
     const SN::Point_evaluation& e = evaluations[i];
-    write_optimal_row(out, model.points[i], model.normals[i], e.optimal);
-    out << ',' << SN::dimensionality_name(e.equal_label) << ',';
-    print_number(out, e.error_cut_off);
-    out << ',';
+    write_optimal_row(rows, model.points[i], model.normals[i], e.optimal);
+    rows.put(',').text(SN::dimensionality_name(e.equal_label)).put(',').number(e.error_cut_off).put(',');
     if(e.k_cut_off != 0)
-      out << e.k_cut_off;
-    out << ',' << SN::dimensionality_name(e.cut_off_label) << ',';
-    print_number(out, e.error_fixed_k);
-    out << ',' << SN::dimensionality_name(e.fixed_k_label) << '\n';
-  }
+      rows.integer(e.k_cut_off);
+    rows.put(',').text(SN::dimensionality_name(e.cut_off_label)).put(',').number(e.error_fixed_k).put(',');
+    rows.text(SN::dimensionality_name(e.fixed_k_label)).put('\n');
+  });
 }
 
 // The tile's own points of `tile` (its halo left out) as a model, with their evaluations: what the
@@ -384,7 +380,7 @@ inline int run_evaluate(int argc, char** argv)
       fs::create_directories(json_path.parent_path());
       if(args.has("--per-point"))
         write_file_atomically((fs::path(outdir) / "models" / (file.name + ".csv")).string(),
-                              [&](std::ofstream& out) { write_evaluation_csv(out, model, evaluations); });
+                              [&](std::ofstream& out) { write_evaluation_csv(out, model, evaluations, options.threads); });
       // The model file last: its presence means the model is complete (--resume relies on it).
       write_file_atomically(json_path.string(), [&](std::ofstream& out) { write_model_json(out, result, settings); });
       ++evaluated;

@@ -9,13 +9,14 @@
 
 #include "command_line.h"
 #include "optimal_command.h"
+#include "phase_times.h"
 #include "ply_output.h"
+#include "text_rows.h"
 
 #include <CGAL/Sigmoid_neighborhoods/filter_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 
-#include <CGAL/Real_timer.h>
 
 #include <cstdint>
 #include <cstdio>
@@ -92,22 +93,14 @@ inline Filter_options read_filter_options(const Arguments& args)
 }
 
 inline void write_filtered_xyz(std::ostream& out, const SN::Oriented_point_set& model,
-                               const std::vector<SN::Oriented_point_set::Vector_3>& normals)
+                               const std::vector<SN::Oriented_point_set::Vector_3>& normals, unsigned int threads)
 {
-  for(std::size_t i = 0; i < normals.size(); ++i)
-  {
+  write_text_rows(out, 0, normals.size(), threads, [&](Text_rows& rows, std::size_t i) {
     const auto& p = model.points[i];
     const auto& n = normals[i];
-    bool first = true;
-    for(double v : {p.x(), p.y(), p.z(), n.x(), n.y(), n.z()})
-    {
-      if(!first)
-        out << ' ';
-      print_number(out, v);
-      first = false;
-    }
-    out << '\n';
-  }
+    rows.number(p.x()).put(' ').number(p.y()).put(' ').number(p.z()).put(' ');
+    rows.number(n.x()).put(' ').number(n.y()).put(' ').number(n.z()).put('\n');
+  });
 }
 
 // Positions and the filtered normals only: the filter has no per-point value to show.
@@ -142,10 +135,10 @@ inline int run_filter_normals(int argc, char** argv)
   const Filter_options options = read_filter_options(args);
   const SN::Normal_options normal_options = read_normal_options(args);
 
-  CGAL::Real_timer timer;
-  timer.start();
+  Phase_times times;
   const SN::Oriented_point_set model =
     read_input(input, [&] { return SN::read_oriented_point_set(input, normal_options); });
+  times.end_reading(model);
   std::vector<SN::Oriented_point_set::Vector_3> normals = model.normals;
   SN::Normal_filter_summary summary;
   try
@@ -156,12 +149,13 @@ inline int run_filter_normals(int argc, char** argv)
   {
     throw Usage_error(input + ": " + e.what());
   }
+  times.end("filter");
 
   if(ext == "ply")
     write_file_atomically(output, [&](std::ofstream& out) { write_filtered_ply(out, model, normals); }, true);
   else
-    write_file_atomically(output, [&](std::ofstream& out) { write_filtered_xyz(out, model, normals); });
-  timer.stop();
+    write_file_atomically(output, [&](std::ofstream& out) { write_filtered_xyz(out, model, normals, options.threads); });
+  times.end("writing");
   char line[256];
   std::snprintf(line, sizeof(line), "%u sweeps, radius %.6g, mean neighborhood %.1f points, %zu empty cones",
                 summary.iterations, summary.radius, summary.mean_neighbors, summary.empty_cones);
@@ -172,9 +166,9 @@ inline int run_filter_normals(int argc, char** argv)
                   summary.fallbacks);
     text += line;
   }
-  std::snprintf(line, sizeof(line), ", %.2f s", timer.time());
+  std::snprintf(line, sizeof(line), ", %.2f s", times.total());
   std::cerr << input << ": " << model_description(model) << (options.line_angles ? ", line angles" : "") << ", "
-            << text << line << '\n';
+            << text << line << " (" << times.text() << ")\n";
   return EXIT_OK;
 }
 

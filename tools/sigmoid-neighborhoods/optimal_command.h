@@ -9,15 +9,15 @@
 #include "catalog_input.h"
 #include "command_line.h"
 #include "model_input.h"
+#include "phase_times.h"
 #include "ply_output.h"
+#include "text_rows.h"
 
 #include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 #include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>
 #include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
-
-#include <CGAL/Real_timer.h>
 
 #include <cmath>
 #include <cstdint>
@@ -131,51 +131,37 @@ const char* const OPTIMAL_CSV_HEADER =
   "x,y,z,nx,ny,nz,a,b,k,error,linearity,planarity,scattering,label,error_equal,k_equal";
 
 // One row of the optimal CSV, without the line end.
-inline void write_optimal_row(std::ostream& out, const SN::Oriented_point_set::Point_3& p,
+inline void write_optimal_row(Text_rows& out, const SN::Oriented_point_set::Point_3& p,
                               const SN::Oriented_point_set::Vector_3& n, const SN::Optimal_sigmoid_neighborhood& r)
 {
   for(double v : {p.x(), p.y(), p.z(), n.x(), n.y(), n.z()})
-  {
-    print_number(out, v);
-    out << ',';
-  }
+    out.number(v).put(',');
   if(r.is_failure())
-    out << ",,,";
+    out.text(",,,");
   else
-  {
-    print_number(out, r.a);
-    out << ',';
-    print_number(out, r.b);
-    out << ',' << r.k << ',';
-  }
-  print_number(out, r.error());
-  out << ',';
+    out.number(r.a).put(',').number(r.b).put(',').integer(r.k).put(',');
+  out.number(r.error()).put(',');
   if(!r.is_failure())
     for(double v : {r.features.linearity, r.features.planarity, r.features.scattering})
-    {
-      print_number(out, v);
-      out << ',';
-    }
+      out.number(v).put(',');
   else
-    out << ",,,";
-  out << SN::dimensionality_name(r.features.label) << ',';
-  print_number(out, r.error_equal);
-  out << ',';
+    out.text(",,,");
+  out.text(SN::dimensionality_name(r.features.label)).put(',').number(r.error_equal).put(',');
   if(r.k_equal != 0)
-    out << r.k_equal;
+    out.integer(r.k_equal);
 }
 
-// The rows of the points `first` ... `last - 1` (a tile without its halo), all by default.
+// The rows of the points `first` ... `last - 1` (a tile without its halo), all by default, formatted
+// on `threads` threads.
 inline void write_optimal_csv(std::ostream& out, const SN::Oriented_point_set& model,
-                              const std::vector<SN::Optimal_sigmoid_neighborhood>& records, std::size_t first = 0,
-                              std::size_t last = std::size_t(-1))
+                              const std::vector<SN::Optimal_sigmoid_neighborhood>& records, unsigned int threads,
+                              std::size_t first = 0, std::size_t last = std::size_t(-1))
 {
   out << OPTIMAL_CSV_HEADER << '\n';
-  for(std::size_t i = first; i < (std::min)(last, records.size()); ++i)
-  {
-    write_optimal_row(out, model.points[i], model.normals[i], records[i]);
-    out << '\n';
-  }
+  write_text_rows(out, first, (std::min)(last, records.size()), threads, [&](Text_rows& rows, std::size_t i) {
+    write_optimal_row(rows, model.points[i], model.normals[i], records[i]);
+    rows.put('\n');
+  });
 }
 
 // A binary PLY point cloud with the CSV's columns as per-vertex properties `scalar_<column>` (a, b
@@ -245,31 +231,34 @@ inline int run_optimal(int argc, char** argv)
   const Ply_colors colors = read_ply_colors(args);
   const SN::Normal_options normal_options = read_normal_options(args);
 
-  CGAL::Real_timer timer;
-  timer.start();
+  Phase_times times;
   const Input_points in = read_input_points(args, "optimal", options.k_max, normal_options);
+  times.end_reading(in.model);
   const SN::Oriented_point_set& model = in.model;
   // a tile without points of its own (empty, or all on an earlier tile's seam) has no rows
   const auto records =
     in.first < in.last ? optimal_search(model, options) : std::vector<SN::Optimal_sigmoid_neighborhood>();
+  times.end("search");
   std::size_t failures = 0;
   for(std::size_t i = in.first; i < in.last; ++i)
     failures += records[i].is_failure();
 
-  write_file_atomically(csv, [&](std::ofstream& out) { write_optimal_csv(out, model, records, in.first, in.last); });
+  write_file_atomically(csv, [&](std::ofstream& out) {
+    write_optimal_csv(out, model, records, options.threads, in.first, in.last);
+  });
   if(!ply.empty())
     write_file_atomically(
       ply, [&](std::ofstream& out) { write_optimal_ply(out, model, records, colors, in.first, in.last); }, true);
-  timer.stop();
-  write_tile_description(csv, "optimal", args, in, timer.time());
+  times.end("writing");
+  write_tile_description(csv, "optimal", args, in, times);
   char seconds[32];
-  std::snprintf(seconds, sizeof(seconds), "%.2f", timer.time());
+  std::snprintf(seconds, sizeof(seconds), "%.2f", times.total());
   std::cerr << in.source << ": " << model_description(model) << halo_description(in)
             << (options.line_angles ? ", line angles" : "")
             << (options.criterion != SN::Neighborhood_criterion::DIMENSIONALITY
                   ? std::string(", criterion ") + SN::criterion_name(options.criterion) : std::string())
             << ", "
-            << failures << " failures, " << seconds << " s\n";
+            << failures << " failures, " << seconds << " s (" << times.text() << ")\n";
   return EXIT_OK;
 }
 

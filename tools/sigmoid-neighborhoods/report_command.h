@@ -296,7 +296,7 @@ inline int run_report(int argc, char** argv)
       read_input(model_path, [&] { return read_model(model_path, options.k_max, normals); });
     const auto evaluations = evaluate_model(model, options, settings);
     figure3_csv = (fs::path(outdir) / "figure3_points.csv").string();
-    write_file_atomically(figure3_csv, [&](std::ofstream& out) { write_evaluation_csv(out, model, evaluations); });
+    write_file_atomically(figure3_csv, [&](std::ofstream& out) { write_evaluation_csv(out, model, evaluations, options.threads); });
     figure3_name = fs::path(model_path).filename().string();
   }
   else

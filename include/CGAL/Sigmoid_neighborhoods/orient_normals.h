@@ -42,7 +42,8 @@ namespace internal {
 // (config.h), in orient_normals_impl.h.
 CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION std::size_t orient_along_spanning_forest(const std::vector<Double_point>& points,
                                                                             const Neighbor_query& query, unsigned int k,
-                                                                            std::vector<Eigen::Vector3d>& normals);
+                                                                            std::vector<Eigen::Vector3d>& normals,
+                                                                            unsigned int threads);
 
 template <typename PointRange, typename NamedParameters>
 Oriented_points checked_oriented_points(const PointRange& points, const NamedParameters& np)
@@ -69,7 +70,8 @@ Oriented_points checked_oriented_points(const PointRange& points, const NamedPar
   neighbors come from the package's kd-tree, or from `neighbor_indices` and `neighbor_offsets` (the
   first `k` entries of each row): the ones `estimate_normals()` used, so that both steps share one
   neighbor structure (pass them with `std::cref()`: CGAL's named parameters copy what they hold).
-  The tree's neighbors are found in the package's parallel loop, the forest grown sequentially: the
+  The forest is the minimum one in the total order of the edges by weight, then by their endpoints'
+  indices (ties broken by index), found by Boruvka's rounds in the package's parallel loop: the
   result is the same for any number of threads.
 
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag`
@@ -99,13 +101,15 @@ std::size_t orient_normals_by_spanning_forest(PointRange& points, unsigned int k
     const internal::Neighbor_query query = internal::neighbor_query(input.points, np);
     internal::check_neighborhood_size(query, (std::min)(k, unsigned(input.size() - 1)));
     if(query.is_given())
-      trees = internal::orient_along_spanning_forest(input.points, query, k, input.normals);
+      trees = internal::orient_along_spanning_forest(input.points, query, k, input.normals,
+                                                     internal::kernel_threads<ConcurrencyTag>(threads));
     else
     {
       // the walk reads the rows of every point twice and sequentially: computed once, in parallel
       const internal::Neighbor_lists rows = internal::nearest_neighbor_rows(query, k, internal::kernel_threads<ConcurrencyTag>(threads));
       const internal::Neighbor_query given(input.points, rows.offsets.data(), rows.indices.data());
-      trees = internal::orient_along_spanning_forest(input.points, given, k, input.normals);
+      trees = internal::orient_along_spanning_forest(input.points, given, k, input.normals,
+                                                     internal::kernel_threads<ConcurrencyTag>(threads));
     }
   }
   internal::write_normals(points, input.normals, np);

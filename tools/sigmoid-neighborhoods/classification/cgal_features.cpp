@@ -12,6 +12,10 @@
 #include <tbb/global_control.h>
 #endif
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -43,14 +47,22 @@ struct Scale
   std::unique_ptr<Eigen_analysis> eigen;
   std::unique_ptr<Grid> grid;
 
-  void build_neighborhood_and_eigen(const Point_set& points, bool first)
+  void build_neighborhood(const Point_set& points, bool first)
   {
     if(first)
       neighborhood = std::make_unique<Neighborhood>(points, points.point_map(), CGAL::Sequential_tag());
     else
       neighborhood = std::make_unique<Neighborhood>(points, points.point_map(), voxel_size, CGAL::Sequential_tag());
+  }
+
+  // Every point's analysis depends on that point alone, so CGAL's parallel loop gives the sequential
+  // one's values; only its mean range, a sum in the threads' order, differs in its last bits: a scale
+  // whose voxel comes from it (the first of the group cgal) is analysed sequentially.
+  template <typename ConcurrencyTag>
+  void build_eigen(const Point_set& points, ConcurrencyTag tag)
+  {
     eigen = std::make_unique<Eigen_analysis>(Eigen_analysis::create_from_point_set(
-      points, points.point_map(), neighborhood->k_neighbor_query(12), CGAL::Sequential_tag(), Diagonalize_traits()));
+      points, points.point_map(), neighborhood->k_neighbor_query(12), tag, Diagonalize_traits()));
     if(voxel_size < 0)
       voxel_size = eigen->mean_range();
   }
@@ -89,16 +101,23 @@ void for_each_scale(std::size_t first, std::size_t last, unsigned int threads, c
       std::rethrow_exception(e);
 }
 
-void append_columns(const CGAL::Classification::Feature_set& features, std::size_t size,
+// The features' values, a column per thread at a time (each value depends on its point alone).
+void append_columns(const CGAL::Classification::Feature_set& features, std::size_t size, unsigned int threads,
                     std::vector<Feature_column>& columns)
 {
-  for(std::size_t f = 0; f < features.size(); ++f)
+  const std::size_t first = columns.size();
+  columns.resize(first + features.size());
+  const std::ptrdiff_t count = std::ptrdiff_t(features.size());
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads == 0 ? omp_get_max_threads() : int(threads))
+#endif
+  for(std::ptrdiff_t f = 0; f < count; ++f)
   {
-    Feature_column c{features[f]->name(), {}};
-    c.values.reserve(size);
+    Feature_column& c = columns[first + std::size_t(f)];
+    c.name = features[std::size_t(f)]->name();
+    c.values.resize(size);
     for(std::size_t i = 0; i < size; ++i)
-      c.values.push_back(features[f]->value(i));
-    columns.push_back(std::move(c));
+      c.values[i] = features[std::size_t(f)]->value(i);
   }
 }
 
@@ -123,26 +142,41 @@ void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scal
     Generator generator(points, point_map, std::max(1u, scale_count), voxel > 0. ? float(voxel) : -1.f);
     CGAL::Classification::Feature_set features;
     generator.generate_point_based_features(features);
-    append_columns(features, points.size(), columns);
+    append_columns(features, points.size(), 1, columns);
     return;
   }
 
   // The scales as the generator's constructor builds them, one after the other there: the voxel of
   // scale s is the first's times 2^s, the first's CGAL's choice from its eigen analysis when not given
+#ifdef CGAL_LINKED_WITH_TBB
+  typedef CGAL::Parallel_tag Per_point_tag;
+  // --threads bounds CGAL's loops over the points, the eigen analyses' and the features'
+  std::unique_ptr<tbb::global_control> limit;
+  if(threads != 0)
+    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
+#else
+  typedef CGAL::Sequential_tag Per_point_tag;
+#endif
   std::vector<Scale> scales(std::max(1u, scale_count));
   std::size_t first_parallel = 0;
   if(voxel > 0.)
     scales[0].voxel_size = float(voxel);
   else
   {
-    scales[0].build_neighborhood_and_eigen(points, true);
+    scales[0].build_neighborhood(points, true);
+    scales[0].build_eigen(points, CGAL::Sequential_tag());
     first_parallel = 1;
   }
   for(std::size_t s = 1; s < scales.size(); ++s)
     scales[s].voxel_size = scales[s - 1].voxel_size * 2;
   if(!grid_only)
+  {
+    // the neighborhoods (a kd-tree, a voxel grid) side by side, then each scale's points on every thread
     for_each_scale(first_parallel, scales.size(), threads,
-                   [&](std::size_t s) { scales[s].build_neighborhood_and_eigen(points, s == 0); });
+                   [&](std::size_t s) { scales[s].build_neighborhood(points, s == 0); });
+    for(std::size_t s = first_parallel; s < scales.size(); ++s)
+      scales[s].build_eigen(points, Per_point_tag());
+  }
   scales[0].grid = std::make_unique<Grid>(points, point_map, bbox, scales[0].voxel_size);
   for(std::size_t s = 1; s < scales.size(); ++s)
     scales[s].grid = std::make_unique<Grid>(scales[s - 1].grid.get());
@@ -153,11 +187,6 @@ void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scal
   using namespace CGAL::Classification::Feature;
   CGAL::Classification::Feature_set features;
   {
-#ifdef CGAL_LINKED_WITH_TBB
-    std::unique_ptr<tbb::global_control> limit;
-    if(threads != 0)
-      limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
-#endif
     features.begin_parallel_additions();
     if(!grid_only)
     {
@@ -183,7 +212,7 @@ void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scal
         features.add_with_scale_id<Generator::Verticality>(s, points, *scales[s].eigen);
     features.end_parallel_additions();
   }
-  append_columns(features, points.size(), columns);
+  append_columns(features, points.size(), threads, columns);
 }
 
 } // namespace sigmoid_tool

@@ -61,6 +61,16 @@ struct Oriented_point_set
   /// parameters `neighbor_indices` and `neighbor_offsets` of the steps after; empty when none kept
   std::vector<std::uint32_t> neighbor_indices;
   std::vector<std::size_t> neighbor_offsets; ///< see `neighbor_indices`
+
+  /// the wall-clock seconds of the steps of the normal estimation, zero where a step did not run
+  /// (the rest of a reader's time is the reading itself: parsing, checks, merging)
+  struct Step_seconds
+  {
+    double neighbor_rows = 0.;     ///< the k-nearest-neighbor rows (the kd-tree and its queries)
+    double normal_estimation = 0.; ///< the fitting of the normals (PCA or jet)
+    double orientation = 0.;       ///< their orientation (`Normal_orientation`)
+  };
+  Step_seconds seconds; ///< see `Step_seconds`
 };
 
 } // namespace Sigmoid_neighborhoods

@@ -48,6 +48,13 @@ public:
   // true when the neighborhoods are the caller's rows
   bool is_given() const { return m_given; }
 
+  // The first k entries of the caller's row of point `i`, without their distances (is_given() only).
+  const std::uint32_t* given_row_begin(std::size_t i) const { return m_indices + m_offsets[i]; }
+  const std::uint32_t* given_row_end(std::size_t i, unsigned int k) const
+  {
+    return m_indices + (std::min)(m_offsets[i] + k, m_offsets[i + 1]);
+  }
+
   // The fewest neighbors query() gives any point for a large k.
   std::size_t fewest_neighbors() const
   {

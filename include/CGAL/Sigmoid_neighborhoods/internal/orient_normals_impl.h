@@ -11,13 +11,12 @@
 
 #include <CGAL/Sigmoid_neighborhoods/orient_normals.h>
 
-#include <boost/graph/detail/d_ary_heap.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -26,89 +25,186 @@ namespace internal {
 
 // Hoppe et al.'s graph is undirected (edge i-j when either point is among the k nearest of the
 // other): the rows give the edges out of a point, and these reversed rows the edges into it.
+// `query` holds given rows (orient_normals_by_spanning_forest() makes them).
 inline Neighbor_lists reversed_neighbor_rows(const Neighbor_query& query, unsigned int k)
 {
+  // sequential: two passes over the rows in memory order, faster than atomic counts on two threads
   const std::size_t n = query.size();
   Neighbor_lists reversed;
   reversed.offsets.assign(n + 1, 0);
-  std::vector<Neighbor> found;
   for(std::size_t i = 0; i < n; ++i)
-  {
-    query.query(static_cast<std::uint32_t>(i), k, found);
-    for(const Neighbor& x : found)
-      ++reversed.offsets[std::size_t(x.index) + 1];
-  }
+    for(const std::uint32_t* j = query.given_row_begin(i); j != query.given_row_end(i, k); ++j)
+      ++reversed.offsets[std::size_t(*j) + 1];
   std::partial_sum(reversed.offsets.begin(), reversed.offsets.end(), reversed.offsets.begin());
   reversed.indices.resize(reversed.offsets[n]);
   std::vector<std::size_t> next(reversed.offsets.begin(), reversed.offsets.end() - 1);
   for(std::size_t i = 0; i < n; ++i)
-  {
-    query.query(static_cast<std::uint32_t>(i), k, found);
-    for(const Neighbor& x : found)
-      reversed.indices[next[x.index]++] = static_cast<std::uint32_t>(i);
-  }
+    for(const std::uint32_t* j = query.given_row_begin(i); j != query.given_row_end(i, k); ++j)
+      reversed.indices[next[*j]++] = static_cast<std::uint32_t>(i);
   return reversed;
 }
 
-// The points by decreasing height, ties by index: the seeds of the components in turn, the first
-// point of each the highest (the first of the highest, as CGAL's mst_orient_normals() takes it).
-inline std::vector<std::uint32_t> points_from_the_top(const std::vector<Double_point>& points)
+// An edge of the graph in the forest's total order: the lighter first, then by its endpoints, so
+// that the minimum spanning forest is unique and Boruvka's rounds find it whatever the threads do.
+struct Forest_edge
 {
-  std::vector<std::uint32_t> order(points.size());
-  std::iota(order.begin(), order.end(), std::uint32_t(0));
-  std::sort(order.begin(), order.end(), [&points](std::uint32_t i, std::uint32_t j) {
-    return points[i].z() > points[j].z() || (points[i].z() == points[j].z() && i < j);
-  });
-  return order;
+  double weight = 2.; // above every weight: no edge
+  std::uint32_t low = std::uint32_t(-1), high = std::uint32_t(-1);
+
+  bool operator<(const Forest_edge& e) const
+  {
+    return weight < e.weight || (weight == e.weight && (low < e.low || (low == e.low && high < e.high)));
+  }
+  bool exists() const { return low != std::uint32_t(-1); }
+};
+
+inline Forest_edge forest_edge(std::uint32_t u, std::uint32_t v, const std::vector<Eigen::Vector3d>& normals)
+{
+  // |n_u . n_v| is the same bits either way round, and whatever the normals' signs
+  return Forest_edge{(std::max)(0., 1. - std::abs(normals[u].dot(normals[v]))), (std::min)(u, v), (std::max)(u, v)};
+}
+
+// The minimum spanning forest of the graph, as pairs of points, by Boruvka's rounds: in each, every
+// point finds in parallel its lightest edge to another component, each component keeps the lightest
+// of its points', and those edges join the components (each is in the forest: the order is total).
+// A point without an edge out of its component never has one again: it leaves the rounds.
+inline std::vector<std::pair<std::uint32_t, std::uint32_t>>
+minimum_spanning_forest(const Neighbor_query& query, const Neighbor_lists& reversed, unsigned int k,
+                        const std::vector<Eigen::Vector3d>& normals, unsigned int threads)
+{
+  const std::size_t n = query.size();
+  std::vector<std::uint32_t> parent(n), component(n), active(n);
+  std::iota(parent.begin(), parent.end(), std::uint32_t(0));
+  std::iota(active.begin(), active.end(), std::uint32_t(0));
+  auto find = [&parent](std::uint32_t v) {
+    while(parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  std::vector<Forest_edge> lightest(n), lightest_of_component(n);
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> forest;
+  forest.reserve(n);
+  while(!active.empty())
+  {
+    for(std::size_t v = 0; v < n; ++v)
+      component[v] = find(std::uint32_t(v));
+    for_each_index<Parallel_if_available_tag>(
+      active.size(), threads, [] { return 0; },
+      [&](std::size_t a, int) {
+        const std::uint32_t u = active[a], own = component[u];
+        // the edges out of the component only ever become fewer: one still out is still the lightest
+        const Forest_edge& previous = lightest[u];
+        if(previous.exists() && component[previous.low] != component[previous.high])
+          return;
+        Forest_edge best;
+        auto consider = [&](const std::uint32_t* v, const std::uint32_t* end) {
+          for(; v != end; ++v)
+            if(component[*v] != own)
+            {
+              const Forest_edge e = forest_edge(u, *v, normals);
+              if(e < best)
+                best = e;
+            }
+        };
+        consider(query.given_row_begin(u), query.given_row_end(u, k));
+        consider(reversed.begin(u), reversed.end(u));
+        lightest[u] = best;
+      },
+      1024);
+    for(std::uint32_t u : active)
+      lightest_of_component[component[u]] = Forest_edge();
+    for(std::uint32_t u : active)
+      if(lightest[u] < lightest_of_component[component[u]])
+        lightest_of_component[component[u]] = lightest[u];
+    for(std::uint32_t u : active)
+    {
+      const Forest_edge& e = lightest_of_component[component[u]];
+      if(!e.exists())
+        continue;
+      const std::uint32_t a = find(e.low), b = find(e.high);
+      if(a == b)
+        continue; // joined already: by this edge, from its other end or an earlier point of the component
+      parent[(std::max)(a, b)] = (std::min)(a, b);
+      forest.emplace_back(e.low, e.high);
+    }
+    active.erase(std::remove_if(active.begin(), active.end(), [&](std::uint32_t u) { return !lightest[u].exists(); }),
+                 active.end());
+  }
+  return forest;
 }
 
 CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION std::size_t orient_along_spanning_forest(const std::vector<Double_point>& points,
                                                                             const Neighbor_query& query, unsigned int k,
-                                                                            std::vector<Eigen::Vector3d>& normals)
+                                                                            std::vector<Eigen::Vector3d>& normals,
+                                                                            unsigned int threads)
 {
   const std::size_t n = points.size();
   const Neighbor_lists reversed = reversed_neighbor_rows(query, k);
-  constexpr std::uint32_t NO_PARENT = std::uint32_t(-1);
-  std::vector<double> key(n, 2.); // above every weight
-  std::vector<std::uint32_t> parent(n, NO_PARENT);
-  std::vector<std::size_t> index_in_heap(n, std::size_t(-1));
-  std::vector<bool> done(n, false);
-  typedef boost::d_ary_heap_indirect<std::uint32_t, 4, std::size_t*, double*, std::less<double>> Heap;
-  Heap heap(key.data(), index_in_heap.data());
-  std::vector<Neighbor> found;
+  const auto forest = minimum_spanning_forest(query, reversed, k, normals, threads);
 
-  std::size_t trees = 0;
-  for(std::uint32_t seed : points_from_the_top(points))
+  // The forest's edges out of each point, and the seed of each tree: its highest point, the first
+  // of the highest by index (as CGAL's mst_orient_normals() takes it).
+  Neighbor_lists tree;
+  tree.offsets.assign(n + 1, 0);
+  std::vector<std::uint32_t> root(n);
+  std::iota(root.begin(), root.end(), std::uint32_t(0));
+  auto find = [&root](std::uint32_t v) {
+    while(root[v] != v)
+      v = root[v] = root[root[v]];
+    return v;
+  };
+  for(const auto& e : forest)
   {
-    if(done[seed])
+    ++tree.offsets[e.first + 1];
+    ++tree.offsets[e.second + 1];
+    const std::uint32_t a = find(e.first), b = find(e.second);
+    root[(std::max)(a, b)] = (std::min)(a, b);
+  }
+  std::partial_sum(tree.offsets.begin(), tree.offsets.end(), tree.offsets.begin());
+  tree.indices.resize(tree.offsets[n]);
+  {
+    std::vector<std::size_t> next(tree.offsets.begin(), tree.offsets.end() - 1);
+    for(const auto& e : forest)
+    {
+      tree.indices[next[e.first]++] = e.second;
+      tree.indices[next[e.second]++] = e.first;
+    }
+  }
+  constexpr std::uint32_t NONE = std::uint32_t(-1);
+  std::vector<std::uint32_t> seed(n, NONE);
+  for(std::uint32_t v = 0; v < n; ++v)
+  {
+    std::uint32_t& s = seed[find(v)];
+    if(s == NONE || points[v].z() > points[s].z())
+      s = v; // equal heights: the first by index stays
+  }
+
+  // Each tree walked from its seed, turned towards +z, each normal turned to agree with its
+  // parent's: O(n), a small part of the forest's time.
+  std::vector<bool> done(n, false);
+  std::vector<std::uint32_t> stack;
+  std::size_t trees = 0;
+  for(std::uint32_t s : seed)
+  {
+    if(s == NONE)
       continue;
     ++trees;
-    key[seed] = 0.;
-    heap.push(seed);
-    while(!heap.empty())
+    if(normals[s].z() < 0.)
+      normals[s] = -normals[s];
+    done[s] = true;
+    stack.push_back(s);
+    while(!stack.empty())
     {
-      const std::uint32_t u = heap.top();
-      heap.pop();
-      done[u] = true;
-      Eigen::Vector3d& nu = normals[u];
-      if(parent[u] == NO_PARENT ? nu.z() < 0. : nu.dot(normals[parent[u]]) < 0.)
-        nu = -nu;
-      auto relax = [&](std::uint32_t v) {
-        if(done[v])
-          return;
-        const double weight = (std::max)(0., 1. - std::abs(nu.dot(normals[v])));
-        if(weight < key[v])
+      const std::uint32_t u = stack.back();
+      stack.pop_back();
+      for(const std::uint32_t* v = tree.begin(u); v != tree.end(u); ++v)
+        if(!done[*v])
         {
-          key[v] = weight;
-          parent[v] = u;
-          heap.push_or_update(v);
+          done[*v] = true;
+          if(normals[*v].dot(normals[u]) < 0.)
+            normals[*v] = -normals[*v];
+          stack.push_back(*v);
         }
-      };
-      query.query(u, k, found);
-      for(const Neighbor& x : found)
-        relax(x.index);
-      for(const std::uint32_t* v = reversed.begin(u); v != reversed.end(u); ++v)
-        relax(*v);
     }
   }
   return trees;

@@ -17,6 +17,7 @@
 #include <CGAL/property_map.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <numeric>
@@ -44,6 +45,15 @@ inline unsigned int fewest_estimation_neighbors(Normal_estimation_method method)
 
 // Estimates and orients the normals of `out` on one k-nearest-neighbor structure, computed once
 // and shared by both steps (and kept for later ones when `o.kept_neighbors` asks for it).
+// Wall-clock seconds since `start`, and `start` moved to now: the steps' durations in turn.
+inline double seconds_since(std::chrono::steady_clock::time_point& start)
+{
+  const auto now = std::chrono::steady_clock::now();
+  const double seconds = std::chrono::duration<double>(now - start).count();
+  start = now;
+  return seconds;
+}
+
 inline void estimate_normals(Oriented_point_set& out, const Normal_options& o)
 {
   const Normal_estimation_method method = estimation_method(o.source);
@@ -58,16 +68,19 @@ inline void estimate_normals(Oriented_point_set& out, const Normal_options& o)
   out.normals.assign(n, CGAL::NULL_VECTOR);
   const auto maps = parameters::number_of_threads(
     o.threads, CGAL::parameters::point_map(CGAL::make_property_map(out.points)).normal_map(CGAL::make_property_map(out.normals)));
+  auto clock = std::chrono::steady_clock::now();
   try
   {
     // rows the caller computed on these points already (a tile's halo checks them first) are reused
     if(out.neighbor_offsets.size() != n + 1 || out.neighbor_offsets[1] != rows)
       compute_k_nearest_neighbors<Parallel_if_available_tag>(indices, rows, out.neighbor_indices, out.neighbor_offsets, maps);
+    out.seconds.neighbor_rows += seconds_since(clock);
     // read in place: CGAL's named parameters copy what they hold unless given a reference
     const auto np = parameters::neighbor_indices(std::cref(out.neighbor_indices),
                                                  parameters::neighbor_offsets(std::cref(out.neighbor_offsets), maps));
     Sigmoid_neighborhoods::estimate_normals<Parallel_if_available_tag>(indices, k,
                                                                        parameters::normal_estimation_method(method, np));
+    out.seconds.normal_estimation += seconds_since(clock);
     out.orientation_components = 0;
     if(o.orientation == Normal_orientation::SPANNING_FOREST)
       out.orientation_components = orient_normals_by_spanning_forest<Parallel_if_available_tag>(indices, k, np);
@@ -77,6 +90,7 @@ inline void estimate_normals(Oriented_point_set& out, const Normal_options& o)
       for(Oriented_point_set::Vector_3& n : out.normals)
         if(n.z() < 0.)
           n = -n;
+    out.seconds.orientation += seconds_since(clock);
   }
   catch(const std::invalid_argument& e)
   {

@@ -11,6 +11,7 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/Polygon_soup.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/cgal_5_5_workarounds.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/input_file.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_binary_ply_points.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_off.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_ply.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_stl.h>
@@ -52,13 +53,6 @@ inline void read_polygon_soup(const Input_file& file, Polygon_soup& soup)
   if(!read)
     throw Input_error("cannot parse the file as " + ext + (ext == "obj" ? ", or it has no faces" : "") +
                       (reason.empty() ? std::string() : " (" + reason + ")"));
-}
-
-// The PLY vertex properties taken as per-point labels, the first present in this order.
-inline const std::vector<std::string>& ply_label_names()
-{
-  static const std::vector<std::string> names = {"label", "class", "classification"};
-  return names;
 }
 
 // The values of the property `name` of type `T` of `point_set` as labels, when it has one: true then,

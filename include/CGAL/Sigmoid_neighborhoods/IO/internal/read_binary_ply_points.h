@@ -1,0 +1,238 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_READ_BINARY_PLY_POINTS_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_READ_BINARY_PLY_POINTS_H
+
+#include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/cgal_5_5_workarounds.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/check_ply_counts.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/input_file.h>
+
+#include <CGAL/IO/PLY/PLY_reader.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+/// \cond SKIP_IN_MANUAL
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+namespace internal {
+
+// The PLY vertex properties taken as per-point labels, the first present in this order.
+inline const std::vector<std::string>& ply_label_names()
+{
+  static const std::vector<std::string> names = {"label", "class", "classification"};
+  return names;
+}
+
+// One scalar vertex property of a binary PLY file: where it lies in a record and how to read it.
+struct Ply_field
+{
+  std::size_t offset = 0;
+  enum Type { INT8, UINT8, INT16, UINT16, INT32, UINT32, FLOAT, DOUBLE } type = DOUBLE;
+
+  double read(const unsigned char* record) const
+  {
+    const unsigned char* at = record + offset;
+    switch(type)
+    {
+    case INT8: return double(load<std::int8_t>(at));
+    case UINT8: return double(load<std::uint8_t>(at));
+    case INT16: return double(load<std::int16_t>(at));
+    case UINT16: return double(load<std::uint16_t>(at));
+    case INT32: return double(load<std::int32_t>(at));
+    case UINT32: return double(load<std::uint32_t>(at));
+    case FLOAT: return double(load<float>(at));
+    default: return load<double>(at);
+    }
+  }
+
+  template <typename T>
+  static T load(const unsigned char* at)
+  {
+    T value;
+    std::memcpy(&value, at, sizeof(T)); // little-endian files on little-endian machines only
+    return value;
+  }
+};
+
+// The type and size of one of CGAL's scalar PLY readers; false for a list.
+inline bool ply_field_type(const CGAL::IO::internal::PLY_read_number* property, Ply_field::Type& type,
+                           std::size_t& bytes)
+{
+  using CGAL::IO::internal::PLY_read_typed_number;
+  auto is = [property](auto value) {
+    return dynamic_cast<const PLY_read_typed_number<decltype(value)>*>(property) != nullptr;
+  };
+  if(is(std::int8_t())) { type = Ply_field::INT8; bytes = 1; }
+  else if(is(std::uint8_t())) { type = Ply_field::UINT8; bytes = 1; }
+  else if(is(std::int16_t())) { type = Ply_field::INT16; bytes = 2; }
+  else if(is(std::uint16_t())) { type = Ply_field::UINT16; bytes = 2; }
+  else if(is(std::int32_t())) { type = Ply_field::INT32; bytes = 4; }
+  else if(is(std::uint32_t())) { type = Ply_field::UINT32; bytes = 4; }
+  else if(is(float())) { type = Ply_field::FLOAT; bytes = 4; }
+  else if(is(double())) { type = Ply_field::DOUBLE; bytes = 8; }
+  else
+    return false;
+  return true;
+}
+
+inline bool is_little_endian_machine()
+{
+  const std::uint16_t one = 1;
+  unsigned char first;
+  std::memcpy(&first, &one, 1);
+  return first == 1;
+}
+
+// The points of a binary little-endian PLY point set (a vertex element of scalars, x y z both float
+// or both double, and no other element with items), read straight from its records on `threads`
+// threads: the same points, normals and labels as CGAL's point set reader gives in
+// read_points_without_faces(), which reads such a file three times over, through streams, and the
+// same checks first (check_ply_header(), check_ply_counts()). False, with nothing read, for any other
+// file: those go to CGAL's readers.
+inline bool read_binary_ply_points(const Input_file& file, std::vector<Oriented_point_set::Point_3>& points,
+                                   std::vector<Oriented_point_set::Vector_3>& normals, bool& has_normals,
+                                   std::vector<int>& labels, unsigned int threads)
+{
+  if(!is_little_endian_machine())
+    return false;
+  std::ifstream in(file.name, std::ios::binary);
+  {
+    std::string line, format_tag, format;
+    if(!std::getline(in, line) || !std::getline(in, line))
+      return false;
+    std::istringstream(line) >> format_tag >> format;
+    if(format != "binary_little_endian")
+      return false;
+    in.seekg(0);
+  }
+  check_ply_header(file.name);
+  CGAL::IO::internal::PLY_reader reader(false);
+  std::istream& stream = in;
+  if(!reader.init(stream) || in.fail())
+    return false;
+  const std::streamoff header_end = in.tellg();
+
+  const CGAL::IO::internal::PLY_element* vertices = nullptr;
+  for(std::size_t e = 0; e < reader.number_of_elements(); ++e)
+  {
+    const CGAL::IO::internal::PLY_element& element = reader.element(e);
+    if(element.name() == "vertex" || element.name() == "vertices")
+    {
+      if(vertices != nullptr || e != 0)
+        return false;
+      vertices = &element;
+    }
+    else if(element.number_of_items() != 0)
+      return false;
+  }
+  if(vertices == nullptr)
+    return false;
+
+  // The record's layout, and the fields CGAL's point set reader takes from it.
+  enum { X, Y, Z, NX, NY, NZ, FIELDS };
+  const char* const field_names[FIELDS] = {"x", "y", "z", "nx", "ny", "nz"};
+  Ply_field fields[FIELDS];
+  bool found[FIELDS] = {false, false, false, false, false, false};
+  Ply_field label;
+  int label_rank = int(ply_label_names().size()); // the first of ply_label_names() present wins
+  std::size_t stride = 0;
+  auto& element = const_cast<CGAL::IO::internal::PLY_element&>(*vertices);
+  for(std::size_t p = 0; p < element.number_of_properties(); ++p)
+  {
+    const CGAL::IO::internal::PLY_read_number* property = element.property(p);
+    Ply_field field;
+    field.offset = stride;
+    std::size_t bytes = 0;
+    if(!ply_field_type(property, field.type, bytes))
+      return false; // a list
+    stride += bytes;
+    for(int f = 0; f < FIELDS; ++f)
+      if(property->name() == field_names[f])
+      {
+        fields[f] = field;
+        found[f] = true;
+      }
+    for(int rank = 0; rank < label_rank; ++rank)
+      if(property->name() == ply_label_names()[std::size_t(rank)])
+      {
+        label = field;
+        label_rank = rank;
+      }
+  }
+  // CGAL reads x y z as floats when one is a float, as doubles otherwise: both ways alike only
+  auto real = [&](int f) { return fields[f].type == Ply_field::FLOAT || fields[f].type == Ply_field::DOUBLE; };
+  if(!found[X] || !found[Y] || !found[Z] || !real(X) || fields[X].type != fields[Y].type ||
+     fields[X].type != fields[Z].type)
+    return false;
+  has_normals = found[NX] && found[NY] && found[NZ];
+  if(has_normals)
+    for(int f = NX; f <= NZ; ++f)
+      if(!real(f) || (fields[X].type == Ply_field::FLOAT && fields[f].type != Ply_field::FLOAT))
+        return false;
+
+  check_ply_counts(file);
+  const std::size_t n = element.number_of_items();
+  std::vector<unsigned char> records(n * stride);
+  in.clear();
+  in.seekg(header_end);
+  in.read(reinterpret_cast<char*>(records.data()), std::streamsize(records.size()));
+  if(std::size_t(in.gcount()) != records.size())
+    return false; // check_ply_counts() has seen these bytes: CGAL's reader says what happened
+
+  points.resize(n);
+  if(has_normals)
+    normals.resize(n);
+  std::vector<double> label_values(label_rank < int(ply_label_names().size()) ? n : 0);
+  const std::ptrdiff_t count = std::ptrdiff_t(n);
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(threads == 0 ? omp_get_max_threads() : int(threads))
+#else
+  (void)threads;
+#endif
+  for(std::ptrdiff_t i = 0; i < count; ++i)
+  {
+    const unsigned char* record = records.data() + std::size_t(i) * stride;
+    points[std::size_t(i)] = Oriented_point_set::Point_3(fields[X].read(record), fields[Y].read(record),
+                                                         fields[Z].read(record));
+    if(has_normals)
+      normals[std::size_t(i)] = Oriented_point_set::Vector_3(fields[NX].read(record), fields[NY].read(record),
+                                                             fields[NZ].read(record));
+    if(!label_values.empty())
+      label_values[std::size_t(i)] = label.read(record);
+  }
+
+  // ply_labels_of_type()'s rule: integers of `int`, else no labels
+  for(double value : label_values)
+  {
+    if(!(value >= double((std::numeric_limits<int>::min)()) && value <= double((std::numeric_limits<int>::max)())) ||
+       std::trunc(value) != value)
+    {
+      labels.clear();
+      break;
+    }
+    labels.push_back(int(value));
+  }
+  return true;
+}
+
+} // namespace internal
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+/// \endcond
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_READ_BINARY_PLY_POINTS_H

@@ -1,0 +1,221 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Reading and writing on every thread, with the results of the sequential code: binary PLY point
+// sets read from their records against CGAL's point set reader, and the tool's text rows (the
+// shortest text of each double) read back to the same doubles, the same bytes for any thread count.
+
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_binary_ply_points.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_polygon_soup.h>
+
+#include "test_scratch.h"
+#include "text_rows.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace SN = CGAL::Sigmoid_neighborhoods;
+typedef SN::Oriented_point_set::Point_3 Point;
+typedef SN::Oriented_point_set::Vector_3 Vector;
+
+struct Read
+{
+  bool taken = false; // by the binary path
+  std::vector<Point> points;
+  std::vector<Vector> normals;
+  bool has_normals = false;
+  std::vector<int> labels;
+};
+
+Read read_binary(const std::string& path, unsigned int threads)
+{
+  Read r;
+  r.taken = SN::internal::read_binary_ply_points(SN::internal::open_input_file(path, {"ply"}, ".ply"), r.points,
+                                                 r.normals, r.has_normals, r.labels, threads);
+  return r;
+}
+
+Read read_by_cgal(const std::string& path)
+{
+  Read r;
+  SN::internal::read_points_without_faces(SN::internal::open_input_file(path, {"ply"}, ".ply"), r.points, r.normals,
+                                          r.has_normals, &r.labels);
+  return r;
+}
+
+void check_same(const Read& fast, const Read& cgal)
+{
+  REQUIRE(fast.taken);
+  CHECK(fast.points == cgal.points);
+  CHECK(fast.normals == cgal.normals);
+  CHECK(fast.has_normals == cgal.has_normals);
+  CHECK(fast.labels == cgal.labels);
+}
+
+template <typename T>
+void put(std::ofstream& out, T value)
+{
+  out.write(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+
+// A binary little-endian PLY point set: x y z of `Real`, normals of `NormalReal` when asked, a
+// uchar `label` or a float `class` (1.5 every 7th point: no labels then), and an int property between.
+template <typename Real, typename NormalReal>
+std::string write_ply(const std::string& name, std::size_t n, bool normals, const std::string& label_kind)
+{
+  const std::string path = scratch_folder("parallel_io") + "/" + name;
+  std::ofstream out(path, std::ios::binary);
+  const char* real = sizeof(Real) == 4 ? "float" : "double";
+  const char* normal_real = sizeof(NormalReal) == 4 ? "float" : "double";
+  out << "ply\nformat binary_little_endian 1.0\ncomment test\nelement vertex " << n << "\nproperty " << real
+      << " x\nproperty " << real << " y\nproperty int extra\nproperty " << real << " z\n";
+  if(normals)
+    out << "property " << normal_real << " nx\nproperty " << normal_real << " ny\nproperty " << normal_real
+        << " nz\n";
+  if(label_kind == "label")
+    out << "property uchar label\n";
+  else if(label_kind == "class")
+    out << "property float class\n";
+  out << "end_header\n";
+  std::mt19937_64 rng(n);
+  std::uniform_real_distribution<double> u(-1e3, 1e3);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    put(out, Real(u(rng)));
+    put(out, Real(u(rng)));
+    put(out, std::int32_t(i));
+    put(out, Real(u(rng) * 1e-3));
+    if(normals)
+      for(int c = 0; c < 3; ++c)
+        put(out, NormalReal(u(rng) / 1e3));
+    if(label_kind == "label")
+      put(out, std::uint8_t(i % 9));
+    else if(label_kind == "class")
+      put(out, float(i % 7 == 6 ? 1.5 : double(i % 4)));
+  }
+  return path;
+}
+
+} // namespace
+
+TEST_CASE("binary PLY: the records read on any thread count equal CGAL's point set reader", "[io][ply][parallel]")
+{
+  const std::vector<std::string> files = {
+    write_ply<float, float>("float_normals_label.ply", 5000, true, "label"),
+    write_ply<double, float>("double_float_normals.ply", 3001, true, "none"),
+    write_ply<double, double>("double_class.ply", 777, false, "class"),
+    write_ply<float, float>("float_no_normals.ply", 1, false, "none")};
+  for(const std::string& path : files)
+  {
+    INFO(path);
+    const Read cgal = read_by_cgal(path);
+    for(unsigned int threads : {1u, 2u, 3u})
+      check_same(read_binary(path, threads), cgal);
+  }
+  CHECK(read_by_cgal(files[0]).labels.size() == 5000);
+  CHECK(read_by_cgal(files[2]).labels.empty()); // a class of 1.5 is no label
+  CHECK(read_by_cgal(files[0]).points[2].x() != 0.);
+}
+
+TEST_CASE("binary PLY: other files are left to CGAL's readers", "[io][ply][parallel]")
+{
+  const std::string folder = scratch_folder("parallel_io");
+  {
+    std::ofstream ascii(folder + "/ascii.ply");
+    ascii << "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
+             "end_header\n0 0 0\n1 1 1\n";
+  }
+  {
+    std::ofstream mesh(folder + "/mesh.ply", std::ios::binary);
+    mesh << "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+            "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+    for(float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f})
+      put(mesh, v);
+    put(mesh, std::uint8_t(3));
+    for(std::int32_t i : {0, 1, 2})
+      put(mesh, i);
+  }
+  {
+    std::ofstream integers(folder + "/integers.ply", std::ios::binary);
+    integers << "ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty int x\nproperty int y\n"
+                "property int z\nend_header\n";
+    for(std::int32_t v : {1, 2, 3})
+      put(integers, v);
+  }
+  for(const char* name : {"ascii.ply", "mesh.ply", "integers.ply"})
+  {
+    INFO(name);
+    CHECK_FALSE(read_binary(folder + "/" + name, 2).taken);
+  }
+  // a file shorter than its header says: the same error as CGAL's path (the checks come first)
+  const std::string full = write_ply<float, float>("short.ply", 100, true, "none");
+  std::filesystem::resize_file(full, std::filesystem::file_size(full) - 5);
+  CHECK_THROWS_WITH(read_binary(full, 2), Catch::Contains("element 'vertex'"));
+}
+
+TEST_CASE("binary PLY: the lone-star scan of the shared data, as CGAL reads it", "[io][ply][parallel][shared-data]")
+{
+  const std::string scan = std::string(SN_SHARED_DATA_DIR) + "/scanned/lone-star_tls.ply";
+  if(!std::filesystem::exists(scan))
+  {
+    WARN("skipped: " << scan << " is absent");
+    return;
+  }
+  check_same(read_binary(scan, 2), read_by_cgal(scan));
+}
+
+TEST_CASE("text rows: the shortest text reads back to the same double, the same bytes on any thread count",
+          "[io][csv][parallel]")
+{
+  std::mt19937_64 rng(5);
+  std::vector<double> values = {0., -0., 1., 0.1, 1e-320, -1e300, std::numeric_limits<double>::max(),
+                                std::numeric_limits<double>::denorm_min(), 1. / 3., 123456789.125};
+  std::uniform_int_distribution<std::uint64_t> bits;
+  while(values.size() < 20000)
+  {
+    const std::uint64_t b = bits(rng);
+    double v;
+    std::memcpy(&v, &b, sizeof(v));
+    if(std::isfinite(v))
+      values.push_back(v);
+  }
+  auto text = [&](unsigned int threads) {
+    std::ostringstream out;
+    sigmoid_tool::write_text_rows(out, 0, values.size(), threads, [&](sigmoid_tool::Text_rows& rows, std::size_t i) {
+      rows.number(values[i]).put(',').integer(std::int64_t(i) - 7).put('\n');
+    });
+    return out.str();
+  };
+  const std::string one = text(1);
+  CHECK(text(2) == one);
+  CHECK(text(3) == one);
+  std::istringstream in(one);
+  std::string line;
+  std::size_t i = 0;
+  for(; std::getline(in, line); ++i)
+  {
+    const std::size_t comma = line.find(',');
+    const double v = std::strtod(line.substr(0, comma).c_str(), nullptr);
+    REQUIRE(std::memcmp(&v, &values[i], sizeof(v)) == 0);
+    REQUIRE(std::stoll(line.substr(comma + 1)) == std::int64_t(i) - 7);
+  }
+  CHECK(i == values.size());
+  std::ostringstream special;
+  sigmoid_tool::write_text_rows(special, 0, 1, 2, [](sigmoid_tool::Text_rows& rows, std::size_t) {
+    rows.number(std::numeric_limits<double>::infinity()).put(',').number(0.1).put(',').number(1e-5);
+  });
+  CHECK(special.str() == "inf,0.1,1e-05");
+}
