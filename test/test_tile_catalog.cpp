@@ -234,7 +234,15 @@ TEST_CASE("Tile catalog: the six IGN LiDAR HD tiles, with and without halos", "[
     WARN("not found, skipped: " << dir);
     return;
   }
-  const SN::Tile_catalog catalog = SN::read_tile_catalog(dir);
+  // the six adjacent tiles, listed: the folder holds other surveys too
+  const std::string list = catalog_scratch("six_ign_tiles") + "/tiles.txt";
+  {
+    std::ofstream out(list);
+    for(const char* tile : {"77050_627755", "77050_627760", "77055_627755", "77055_627760", "77060_627755",
+                            "77060_627760"})
+      out << dir << "/ign_lidarhd_" << tile << ".las\n";
+  }
+  const SN::Tile_catalog catalog = SN::read_tile_catalog(list);
   REQUIRE(catalog.tiles.size() == 6);
   CHECK(catalog.tiles[0].name == "ign_lidarhd_77050_627755");
   CHECK(catalog.tiles[0].points == 73355);

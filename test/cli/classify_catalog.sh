@@ -20,7 +20,12 @@ start=$(date +%s)
 "$tool" classify train "$labeled/ign_lidarhd_77050_627755.las" -o "$dir/model.bin" --features k20,optimal,height \
   --trees 4 --depth 12 2> "$dir/train.txt" || fail "train: $(cat "$dir/train.txt")"
 
-"$tool" catalog list "$labeled" --names > "$dir/names.txt" || fail "catalog list"
+# the six adjacent IGN tiles, listed: the folder holds other surveys too
+for tile in 77050_627755 77050_627760 77055_627755 77055_627760 77060_627755 77060_627760; do
+  echo "$(cd "$labeled" && pwd)/ign_lidarhd_$tile.las"
+done > "$dir/tiles.txt"
+catalog=$dir/tiles.txt
+"$tool" catalog list "$catalog" --names > "$dir/names.txt" || fail "catalog list"
 [ "$(wc -l < "$dir/names.txt")" -eq 6 ] || fail "not 6 tiles: $(cat "$dir/names.txt")"
 first_tile=$(head -1 "$dir/names.txt")
 
@@ -33,13 +38,13 @@ predict_and_compare() {
   mkdir -p "$out/tiles"
   set --
   while read -r name; do
-    "$tool" classify predict "$dir/$model" --catalog "$labeled" --tile "$name" -o "$out/tiles/$name.ply" \
+    "$tool" classify predict "$dir/$model" --catalog "$catalog" --tile "$name" -o "$out/tiles/$name.ply" \
       $options 2> "$out/tiles/$name.txt" || fail "predict $name ($label): $(cat "$out/tiles/$name.txt")"
     grep -q '"exact": true' "$out/tiles/$name.tile.json" || fail "$name ($label): no exact tile description"
     grep -q '"command": "classify predict"' "$out/tiles/$name.tile.json" || fail "$name ($label): not classify predict"
     set -- "$@" "$out/tiles/$name.ply"
   done < "$dir/names.txt"
-  "$tool" classify predict "$dir/$model" --catalog "$labeled" -o "$out/union.ply" 2> "$out/union.txt" \
+  "$tool" classify predict "$dir/$model" --catalog "$catalog" -o "$out/union.ply" 2> "$out/union.txt" \
     || fail "predict the union ($label): $(cat "$out/union.txt")"
   [ ! -e "$out/union.tile.json" ] || fail "a tile description for the union ($label)"
   "$python" - "$out/union.ply" "$@" > "$out/compare.txt" 2>&1 <<'EOF' || fail "$label: $(cat "$out/compare.txt")"
@@ -89,7 +94,7 @@ grep -q '"pyramid":{"cell":0.5,"cell_sizes":\[0.5,1.0,2.0,4.0,8.0\],"k":10,"leve
 # the tiles from a 10 m halo (too narrow: read again, wider), then one from the default first halo
 predict_and_compare pyramid.bin pyramid "--halo 10"
 grep -q ' readings, ' "$dir/pyramid/tiles/$first_tile.txt" || fail "a 10 m halo was enough for the pyramid"
-"$tool" classify predict "$dir/pyramid.bin" --catalog "$labeled" --tile "$first_tile" -o "$dir/pyramid_default.ply" \
+"$tool" classify predict "$dir/pyramid.bin" --catalog "$catalog" --tile "$first_tile" -o "$dir/pyramid_default.ply" \
   2> "$dir/pyramid_default.txt" || fail "predict $first_tile (pyramid): $(cat "$dir/pyramid_default.txt")"
 cmp -s "$dir/pyramid_default.ply" "$dir/pyramid/tiles/$first_tile.ply" \
   || fail "the pyramid's tile from the default halo differs from the one from 10 m"
@@ -104,12 +109,12 @@ first=$(head -1 "$dir/names.txt")
 tail -n +3 "$dir/model.bin" >> "$dir/cgal_model.bin"
 grep -q '"cgal","k20"' "$dir/cgal_model.bin" || fail "the model with the group cgal was not made"
 expect_refusal "feature group cgal depends on the whole point set" \
-  "$tool" classify predict "$dir/cgal_model.bin" --catalog "$labeled" --tile "$first" -o "$dir/none.ply"
+  "$tool" classify predict "$dir/cgal_model.bin" --catalog "$catalog" --tile "$first" -o "$dir/none.ply"
 expect_refusal "--graphcut minimises over the whole point set" \
-  "$tool" classify predict "$dir/model.bin" --catalog "$labeled" --tile "$first" -o "$dir/none.ply" --graphcut 0.2
+  "$tool" classify predict "$dir/model.bin" --catalog "$catalog" --tile "$first" -o "$dir/none.ply" --graphcut 0.2
 expect_refusal "--tile and --halo go with --catalog" \
   "$tool" classify predict "$dir/model.bin" "$labeled/$first.las" --tile "$first" -o "$dir/none.ply"
 expect_refusal "takes --catalog SOURCE or INPUT, not both" \
-  "$tool" classify predict "$dir/model.bin" "$labeled/$first.las" --catalog "$labeled" -o "$dir/none.ply"
+  "$tool" classify predict "$dir/model.bin" "$labeled/$first.las" --catalog "$catalog" -o "$dir/none.ply"
 [ ! -e "$dir/none.ply" ] && [ ! -e "$dir/none.tile.json" ] || fail "a refused command wrote its output"
 echo "classify-catalog-ok"
