@@ -929,6 +929,25 @@ TEST_CASE("the kd-tree's k nearest and balls equal brute force", "[neighbors]")
         REQUIRE(found[t].index == expected[t].second);
     }
   CHECK(on_boundary > 0);
+
+  // the tree built on several threads (the top levels split level by level, then subtrees) is the one
+  // built on one: the same positions in its leaves, the same neighbors
+  for(unsigned int threads : {2u, 3u, 0u})
+  {
+    const SN::internal::Point_kd_tree tree(copy, threads);
+    CHECK(tree.leaf_order() == query.spatial_order());
+    std::vector<SN::internal::Neighbor> from_tree;
+    bool same = true;
+    for(std::uint32_t i = 0; i < copy.size(); i += 5)
+    {
+      query.query(i, 33, found);
+      tree.nearest(i, 33, from_tree);
+      same = same && found.size() == from_tree.size() &&
+             std::equal(found.begin(), found.end(), from_tree.begin(),
+                        [](const auto& a, const auto& b) { return a.index == b.index && a.squared_distance == b.squared_distance; });
+    }
+    CHECK(same);
+  }
 }
 
 TEST_CASE("the kd-tree on a single point, on a pair and on a hundred copies of one point", "[neighbors][bad-input]")

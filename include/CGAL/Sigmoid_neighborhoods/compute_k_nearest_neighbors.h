@@ -61,9 +61,10 @@ void compute_k_nearest_neighbors(const PointRange& points, unsigned int k, std::
     internal::checked_points(points, NP_helper::get_const_point_map(points, np));
   if(copy.size() > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
     throw std::invalid_argument("compute_k_nearest_neighbors(): more than 2^32 - 1 points");
-  const internal::Neighbor_query query(copy);
+  const unsigned int threads = internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np));
+  const internal::Neighbor_query query(copy, threads);
   internal::Neighbor_lists rows =
-    internal::nearest_neighbor_rows(query, k, internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np)));
+    internal::nearest_neighbor_rows(query, k, threads);
   indices = std::move(rows.indices);
   offsets = std::move(rows.offsets);
 }

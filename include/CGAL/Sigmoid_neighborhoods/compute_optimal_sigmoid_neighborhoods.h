@@ -122,7 +122,7 @@ compute_optimal_sigmoid_neighborhoods(const PointRange& points, OutputIterator o
   const auto input = internal::copy_oriented_points(points, NP_helper::get_const_point_map(points, np),
                                                     NP_helper::get_normal_map(points, np),
                                                     internal::line_angles(np));
-  const internal::Neighbor_query query = internal::neighbor_query(input.points, np);
+  const internal::Neighbor_query query = internal::neighbor_query<ConcurrencyTag>(input.points, np);
   internal::optimal_search_all<ConcurrencyTag>(
     input, query, internal::search_settings(np),
     [&output](std::size_t, const Optimal_sigmoid_neighborhood& r) { *output++ = r; });

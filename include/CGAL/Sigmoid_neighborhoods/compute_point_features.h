@@ -96,7 +96,7 @@ compute_point_features(const PointRange& points, const Cosine_sigmoid& sigmoid, 
                                                     internal::line_angles(np));
   const Barycenter barycenter = choose_parameter(get_parameter(np, internal_np::barycenter), Barycenter::WEIGHTED);
   internal::check_enough_points(input.points.size(), k_max);
-  const internal::Neighbor_query query = internal::neighbor_query(input.points, np);
+  const internal::Neighbor_query query = internal::neighbor_query<ConcurrencyTag>(input.points, np);
   internal::check_neighborhood_size(query, k_max);
   internal::for_each_neighborhood<ConcurrencyTag, std::vector<Point_features>>(
     input, query, k_max, internal::number_of_threads(np), [] { return std::vector<double>(); },
@@ -187,7 +187,7 @@ compute_optimal_point_features(const PointRange& points, RecordOutputIterator re
                                                     internal::line_angles(np));
   const internal::Search_settings settings = internal::search_settings(np);
   internal::check_enough_points(input.size(), settings.k_max);
-  const internal::Neighbor_query query = internal::neighbor_query(input.points, np);
+  const internal::Neighbor_query query = internal::neighbor_query<ConcurrencyTag>(input.points, np);
   internal::check_neighborhood_size(query, settings.k_max);
   internal::optimal_point_features_all<ConcurrencyTag>(
     input, query, settings, [&](std::size_t, const Optimal_sigmoid_neighborhood& record, const Point_features& f) {

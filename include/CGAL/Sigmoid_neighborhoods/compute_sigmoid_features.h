@@ -121,7 +121,7 @@ compute_sigmoid_features(const PointRange& points, const Cosine_sigmoid& sigmoid
                                                     NP_helper::get_normal_map(points, np),
                                                     internal::line_angles(np));
   const Barycenter barycenter = choose_parameter(get_parameter(np, internal_np::barycenter), Barycenter::WEIGHTED);
-  const internal::Neighbor_query query = internal::neighbor_query(input.points, np);
+  const internal::Neighbor_query query = internal::neighbor_query<ConcurrencyTag>(input.points, np);
   for(const Dimensionality_features& f : internal::features_all<ConcurrencyTag>(input, query, sigmoid, k, barycenter,
                                                                                 internal::number_of_threads(np)))
     *output++ = f;

@@ -141,7 +141,7 @@ void estimate_normals(PointRange& points, unsigned int k, const CGAL_NP_CLASS& n
   if(copy.size() < std::size_t(k) + 1)
     throw std::invalid_argument("estimate_normals(): needs at least k + 1 = " + std::to_string(k + 1) +
                                 " points, got " + std::to_string(copy.size()));
-  const internal::Neighbor_query query = internal::neighbor_query(copy, np);
+  const internal::Neighbor_query query = internal::neighbor_query<ConcurrencyTag>(copy, np);
   internal::check_neighborhood_size(query, k);
 
   const std::vector<Eigen::Vector3d> normals = internal::estimate_normals_all(

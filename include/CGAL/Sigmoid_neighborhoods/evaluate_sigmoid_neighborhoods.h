@@ -198,7 +198,7 @@ OutputIterator evaluate_sigmoid_neighborhoods(const PointRange& points, OutputIt
   settings.criterion = Neighborhood_criterion::DIMENSIONALITY; // the paper's statistics are of E_dim
   const double cut_off = choose_parameter(get_parameter(np, internal_np::cut_off_angle), std::acos(0.9));
   const unsigned int fixed_k = choose_parameter(get_parameter(np, internal_np::fixed_k), settings.k_max);
-  const internal::Neighbor_query query = internal::neighbor_query(input.points, np);
+  const internal::Neighbor_query query = internal::neighbor_query<ConcurrencyTag>(input.points, np);
   internal::evaluate_all<ConcurrencyTag>(input, query, settings, cut_off, fixed_k,
                                          [&output](std::size_t, const Point_evaluation& e) { *output++ = e; });
   return output;

@@ -98,7 +98,7 @@ std::size_t orient_normals_by_spanning_forest(PointRange& points, unsigned int k
   const unsigned int threads = internal::number_of_threads(np);
   std::size_t trees = 0;
   {
-    const internal::Neighbor_query query = internal::neighbor_query(input.points, np);
+    const internal::Neighbor_query query = internal::neighbor_query<ConcurrencyTag>(input.points, np);
     internal::check_neighborhood_size(query, (std::min)(k, unsigned(input.size() - 1)));
     if(query.is_given())
       trees = internal::orient_along_spanning_forest(input.points, query, k, input.normals,

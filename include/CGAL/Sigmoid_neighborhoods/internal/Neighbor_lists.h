@@ -138,7 +138,9 @@ std::optional<Neighbor_lists> given_neighborhoods(const NamedParameters& np, std
     return std::nullopt;
 }
 
-template <typename NamedParameters>
+// The neighborhoods of `np` (neighbor_indices and neighbor_offsets), else the kd-tree, built on the
+// threads of a call of `ConcurrencyTag`.
+template <typename ConcurrencyTag, typename NamedParameters>
 Neighbor_query neighbor_query(const std::vector<Double_point>& points, const NamedParameters& np)
 {
   using CGAL::parameters::get_parameter_reference;
@@ -173,7 +175,8 @@ Neighbor_query neighbor_query(const std::vector<Double_point>& points, const Nam
     }
   }
   else
-    return Neighbor_query(points);
+    return Neighbor_query(points, kernel_threads<ConcurrencyTag>(CGAL::parameters::choose_parameter(
+                                    CGAL::parameters::get_parameter(np, internal_np::number_of_threads), 0u)));
 }
 
 // The k nearest other points of every point of `query` in rows of min(k, n - 1), ordered by

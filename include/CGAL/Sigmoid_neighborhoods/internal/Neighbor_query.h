@@ -26,8 +26,8 @@ namespace internal {
 class Neighbor_query
 {
 public:
-  // `points` must outlive the query.
-  explicit Neighbor_query(const std::vector<Double_point>& points);
+  // `points` must outlive the query. The tree is built on `threads` threads (kernel_threads()).
+  explicit Neighbor_query(const std::vector<Double_point>& points, unsigned int threads = 1);
 
   // The caller's rows (checked by check_neighbor_rows()) instead of the tree: no tree is built.
   Neighbor_query(const std::vector<Double_point>& points, std::vector<std::size_t> offsets,

@@ -18,8 +18,9 @@ namespace CGAL {
 namespace Sigmoid_neighborhoods {
 namespace internal {
 
-CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Neighbor_query::Neighbor_query(const std::vector<Double_point>& points)
-  : m_points(points), m_tree(points)
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Neighbor_query::Neighbor_query(const std::vector<Double_point>& points,
+                                                                   unsigned int threads)
+  : m_points(points), m_tree(points, threads)
 {}
 
 CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Neighbor_query::query(std::uint32_t i, unsigned int k, std::vector<Neighbor>& result,

@@ -86,8 +86,8 @@ public:
   static constexpr std::size_t SORTED_INSERTION_K = 32;
 
   Point_kd_tree() = default;
-  // `points` must outlive the tree.
-  explicit Point_kd_tree(const std::vector<Double_point>& points);
+  // `points` must outlive the tree. Built on `threads` threads (kernel_threads()), the same tree.
+  explicit Point_kd_tree(const std::vector<Double_point>& points, unsigned int threads = 1);
 
   // The min(k, n - 1) nearest points of point `i` other than `i` itself, ordered by is_nearer().
   // `squared_bound`, when given, is a squared distance within which the caller knows that many
@@ -115,7 +115,18 @@ private:
     std::uint32_t axis;
   };
 
-  std::uint32_t build(std::uint32_t begin, std::uint32_t end);
+  // A node to build: its id, its positions [begin, end).
+  struct Pending
+  {
+    std::uint32_t id, begin, end;
+  };
+  // The nodes of a subtree of `count` positions (its nodes are numbered in preorder, so that a
+  // subtree's id and size place its siblings without building it).
+  static std::uint32_t subtree_nodes(std::uint32_t count);
+  // Builds the node `node`: a leaf, or a split and its children, returned to build later.
+  bool split(const Pending& node, Pending& left, Pending& right);
+  // Builds the subtree of `node` whole.
+  void build(const Pending& node);
   // the squared distance from q to the point at position e, as every query computes it
   double squared_distance_at(std::uint32_t e, const double* q) const
   {

@@ -10,15 +10,18 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_POINT_KD_TREE_IMPL_H
 
 #include <CGAL/Sigmoid_neighborhoods/internal/Point_kd_tree.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
 #include <algorithm>
 #include <limits>
+#include <vector>
 
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 namespace internal {
 
-CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Point_kd_tree::Point_kd_tree(const std::vector<Double_point>& points)
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Point_kd_tree::Point_kd_tree(const std::vector<Double_point>& points,
+                                                                 unsigned int threads)
 {
   const std::uint32_t n = static_cast<std::uint32_t>(points.size());
   if(n == 0)
@@ -27,17 +30,64 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Point_kd_tree::Point_kd_tree(const std:
   m_index.resize(n);
   for(std::uint32_t i = 0; i < n; ++i)
     m_index[i] = i;
-  m_nodes.reserve(2 * (std::size_t(n) / LEAF_SIZE + 1));
-  build(0, n);
+  m_nodes.resize(subtree_nodes(n));
+  // The top levels split node by node, each level's nodes in parallel, until there are subtrees
+  // enough for every thread; then the subtrees in parallel. Each split reads and writes its own
+  // positions and nodes: the tree is the sequential one for any number of threads.
+  std::vector<Pending> level{Pending{0, 0, n}};
+  const std::size_t enough = threads == 1 ? 1 : 8 * std::size_t(threads == 0 ? 16 : threads);
+  while(!level.empty() && level.size() < enough)
+  {
+    std::vector<Pending> children(2 * level.size(), Pending{0, 0, 0});
+    std::vector<char> is_split(level.size(), 0);
+    for_each_index<Parallel_if_available_tag>(
+      level.size(), threads, [] { return 0; },
+      [&](std::size_t i, int) { is_split[i] = split(level[i], children[2 * i], children[2 * i + 1]); }, 1);
+    std::vector<Pending> next;
+    for(std::size_t i = 0; i < level.size(); ++i)
+      if(is_split[i])
+      {
+        next.push_back(children[2 * i]);
+        next.push_back(children[2 * i + 1]);
+      }
+    level.swap(next);
+  }
+  for_each_index<Parallel_if_available_tag>(
+    level.size(), threads, [] { return 0; }, [&](std::size_t i, int) { build(level[i]); }, 1);
 }
 
-// Builds the node of positions [begin, end) and returns it.
-CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION std::uint32_t Point_kd_tree::build(std::uint32_t begin, std::uint32_t end)
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION std::uint32_t Point_kd_tree::subtree_nodes(std::uint32_t count)
 {
-  const std::uint32_t id = static_cast<std::uint32_t>(m_nodes.size());
-  m_nodes.push_back(Node{0., 0., begin, end, 3});
+  // nodes(m) = 1 + nodes(m / 2) + nodes(m - m / 2) above a leaf. The sizes of one depth differ by one
+  // at most (lows[d] and highs[d]), so the recursion meets two per depth: counted from the leaves up.
+  std::vector<std::uint32_t> lows, highs;
+  for(std::uint32_t low = count, high = count;; low /= 2, high -= high / 2)
+  {
+    lows.push_back(low);
+    highs.push_back(high);
+    if(high <= LEAF_SIZE)
+      break;
+  }
+  std::uint32_t low_nodes = 1, high_nodes = 1; // the deepest sizes are leaves
+  for(std::size_t d = lows.size() - 1; d-- > 0;)
+  {
+    auto below = [&](std::uint32_t m) { return m == lows[d + 1] ? low_nodes : high_nodes; };
+    auto nodes = [&](std::uint32_t m) { return m <= LEAF_SIZE ? 1u : 1u + below(m / 2) + below(m - m / 2); };
+    const std::uint32_t new_low = nodes(lows[d]), new_high = nodes(highs[d]);
+    low_nodes = new_low;
+    high_nodes = new_high;
+  }
+  return low_nodes;
+}
+
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION bool Point_kd_tree::split(const Pending& node, Pending& left, Pending& right)
+{
+  const std::uint32_t begin = node.begin, end = node.end;
   if(end - begin <= LEAF_SIZE)
-    return id;
+  {
+    m_nodes[node.id] = Node{0., 0., begin, end, 3};
+    return false;
+  }
   double low[3], high[3];
   for(int d = 0; d < 3; ++d)
   {
@@ -67,10 +117,19 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION std::uint32_t Point_kd_tree::build(std:
   for(std::uint32_t e = begin; e < middle; ++e)
     left_end = (std::max)(left_end, coordinate(m_index[e]));
   const double right_begin = coordinate(m_index[middle]);
-  build(begin, middle);
-  const std::uint32_t right = build(middle, end);
-  m_nodes[id] = Node{left_end, right_begin, right, 0, std::uint32_t(axis)};
-  return id;
+  left = Pending{node.id + 1, begin, middle};
+  right = Pending{node.id + 1 + subtree_nodes(middle - begin), middle, end};
+  m_nodes[node.id] = Node{left_end, right_begin, right.id, 0, std::uint32_t(axis)};
+  return true;
+}
+
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::build(const Pending& node)
+{
+  Pending left, right;
+  if(!split(node, left, right))
+    return;
+  build(left);
+  build(right);
 }
 
 // Visits the leaves of node `id` that are not farther than bound(), nearer child first; `gap`

@@ -11,6 +11,11 @@
 #include <cstddef>
 #include <vector>
 
+#ifdef _OPENMP
+#include <omp.h>
+#include <parallel/algorithm>
+#endif
+
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 namespace internal {
@@ -29,8 +34,10 @@ struct Merged_positions
 // Positions are equal when their coordinates are (so 0 and -0 are one position). The points sorted
 // by position, ties by index, put each position's points together, its first one first: a sort of
 // indices, where a search tree of positions took a node per point.
+// `threads` sort the points (0: OpenMP's default): the order is total, so the result is the same.
 template <typename Point>
-Merged_positions merge_equal_positions(const std::vector<Point>& points, const std::vector<bool>& included = {})
+Merged_positions merge_equal_positions(const std::vector<Point>& points, const std::vector<bool>& included = {},
+                                       unsigned int threads = 1)
 {
   Merged_positions result;
   result.position_of.assign(points.size(), Merged_positions::LEFT_OUT);
@@ -42,10 +49,18 @@ Merged_positions merge_equal_positions(const std::vector<Point>& points, const s
   const auto position = [&](std::size_t i) {
     return std::array<double, 3>{{double(points[i].x()), double(points[i].y()), double(points[i].z())}};
   };
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+  const auto before = [&](std::size_t a, std::size_t b) {
     const auto pa = position(a), pb = position(b);
     return pa < pb || (!(pb < pa) && a < b);
-  });
+  };
+#ifdef _OPENMP
+  const int team = threads == 0 ? omp_get_max_threads() : int(threads);
+  if(team > 1)
+    __gnu_parallel::sort(order.begin(), order.end(), before,
+                         __gnu_parallel::default_parallel_tag(static_cast<__gnu_parallel::_ThreadIndex>(team)));
+  else
+#endif
+    std::sort(order.begin(), order.end(), before);
   // each point's first point at its position; a first point is its own
   std::vector<std::size_t> first_at(points.size(), Merged_positions::LEFT_OUT);
   for(std::size_t r = 0; r < order.size(); ++r)

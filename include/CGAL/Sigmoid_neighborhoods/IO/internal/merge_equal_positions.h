@@ -30,9 +30,9 @@ void keep_first_of_merged(std::vector<T>& values, const Merged_positions& merged
 
 // A point set read with or without normals: duplicates merged into the first, with its normal and
 // its per-point values (labels, LAS fields); returns which points were kept.
-inline Merged_positions merge_duplicate_points(Oriented_point_set& out, bool has_normals)
+inline Merged_positions merge_duplicate_points(Oriented_point_set& out, bool has_normals, unsigned int threads = 1)
 {
-  const Merged_positions merged = merge_equal_positions(out.points);
+  const Merged_positions merged = merge_equal_positions(out.points, {}, threads);
   keep_first_of_merged(out.points, merged);
   if(has_normals)
     keep_first_of_merged(out.normals, merged);

@@ -50,7 +50,7 @@ read_oriented_point_set(const std::string& filename, const Normal_options& optio
   Oriented_point_set out;
   bool has_normals = false;
   if(file.extension == "xyz" || file.extension == "pwn")
-    internal::read_xyz(file.name, out.points, out.normals, has_normals);
+    internal::read_xyz(file.name, out.points, out.normals, has_normals, options.threads);
   else if(file.extension == "las" || file.extension == "laz")
     internal::read_las(file, out, internal::Keep_every_las_point(), options.threads); // no normals in LAS
   else if(file.extension == "ply" && internal::read_binary_ply_points(file, out.points, out.normals, has_normals, out.labels,
@@ -88,7 +88,7 @@ read_oriented_point_set(const std::string& filename, const Normal_options& optio
   }
   else if(zeros > 0 && may_skip_estimation)
     throw Input_error("point " + std::to_string(first_zero) + " has a zero normal");
-  internal::merge_duplicate_points(out, has_normals);
+  internal::merge_duplicate_points(out, has_normals, options.threads);
   if(!has_normals && options.source == Normal_source::FROM_FILE)
     throw Input_error("the file has no normals");
   if(!has_normals && may_skip_estimation)
