@@ -5,10 +5,12 @@
 // lengths in ASCII and both binary byte orders, OFF vertex, face and corner counts, STL triangle
 // counts) is refused when the rest of the file cannot hold it, before anything is sized to it,
 // and the readers stay within 256 MiB and 5 s on every such file; out of memory in the tool is one
-// line and exit code 3, inside the parallel search too, and `evaluate` goes on after it.
+// line and exit code 3, inside the parallel search too, and `evaluate` goes on after it. XYZ files
+// parsed in parallel give the points and the first error of a sequential reading.
 
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_polygon_mesh.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_xyz.h>
 #include <CGAL/Surface_mesh.h>
 
 #include "test_scratch.h"
@@ -20,6 +22,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -506,6 +509,125 @@ TEST_CASE("Input limits: every file of the bad corpus and every fuzzing finding 
     }
   }
   CHECK(files >= 100);
+}
+
+// ------------------------------------------------------------------------------------------------
+// XYZ files parsed in parallel, a block of lines a thread: the same points and the same first error.
+
+namespace {
+
+// A comment that makes a few thousand lines span several of the reader's 1 MiB blocks.
+const std::string XYZ_PADDING = "  # " + std::string(700, '.');
+
+// `n` lines of a point each, in turns of notations, separators, line ends, comment and empty
+// lines; `tokens` gets each point's numbers as written. Two lines of known values come first, a
+// line without '\n' last.
+std::string mixed_xyz(int n, std::vector<std::array<std::string, 3>>& tokens)
+{
+  std::string text = "1e-3\t+2.5 -0x1p-2\n# a comment line\n\n  .5 -0 1E2\r\n";
+  tokens = {{"1e-3", "+2.5", "-0x1p-2"}, {".5", "-0", "1E2"}};
+  for(int i = 0; i < n; ++i)
+  {
+    const double v = std::sin(i * 0.7) * std::pow(10., i % 41 - 20);
+    char numbers[3][64];
+    std::snprintf(numbers[0], sizeof(numbers[0]), "%.17g", v);
+    std::snprintf(numbers[1], sizeof(numbers[1]), i % 2 ? "%+.3f" : "%.3f", v * 1e20); // '+': not from_chars'
+    std::snprintf(numbers[2], sizeof(numbers[2]), i % 3 ? "%.6E" : "%a", -v);          // hex: not from_chars'
+    tokens.push_back({numbers[0], numbers[1], numbers[2]});
+    const char* const separator = i % 4 ? " " : "\t ";
+    text += std::string(numbers[0]) + separator + numbers[1] + separator + numbers[2];
+    text += i % 5 == 1 ? std::string() : XYZ_PADDING;
+    text += i % 7 == 0 ? "\r\n" : "\n";
+    if(i % 11 == 0)
+      text += "# " + XYZ_PADDING + (i % 2 ? "\n" : "\n\n");
+  }
+  tokens.push_back({"7", "8", "9"});
+  return text + "7 8 9";
+}
+
+std::vector<SN::Oriented_point_set::Point_3> read_xyz_points(const std::string& file, unsigned int threads)
+{
+  std::vector<SN::Oriented_point_set::Point_3> points;
+  std::vector<SN::Oriented_point_set::Vector_3> normals;
+  bool has_normals = true;
+  SN::internal::read_xyz(file, points, normals, has_normals, threads);
+  CHECK(normals.empty());
+  CHECK_FALSE(has_normals);
+  return points;
+}
+
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
+
+} // namespace
+
+TEST_CASE("Parallel XYZ reading: the points of a sequential reading, bit for bit, on any number of threads",
+          "[io][xyz]")
+{
+  std::vector<std::array<std::string, 3>> tokens;
+  const std::string text = mixed_xyz(6000, tokens);
+  REQUIRE(text.size() > (std::size_t(3) << 20)); // several blocks
+  const std::string file = write_file("mixed.xyz", text);
+  for(unsigned int threads : {1u, 2u, 5u})
+  {
+    INFO("threads: " << threads);
+    const auto points = read_xyz_points(file, threads);
+    REQUIRE(points.size() == tokens.size());
+    // each number as std::strtod reads its text, as the sequential reader did
+    std::size_t different = 0;
+    for(std::size_t i = 0; i < points.size(); ++i)
+      for(int c = 0; c < 3; ++c)
+        if(!same_bits(points[i][c], std::strtod(tokens[i][std::size_t(c)].c_str(), nullptr)))
+          ++different;
+    CHECK(different == 0);
+    CHECK(points[0] == SN::Oriented_point_set::Point_3(0.001, 2.5, -0.25));
+    CHECK(points[1] == SN::Oriented_point_set::Point_3(0.5, 0., 100.));
+    CHECK(std::signbit(points[1].y()));
+    CHECK(points.back() == SN::Oriented_point_set::Point_3(7, 8, 9));
+  }
+}
+
+TEST_CASE("Parallel XYZ reading: the file's first error, with its line number, on any number of threads",
+          "[io][xyz]")
+{
+  // 5000 lines in several blocks (of about 1700 lines): points, comments only in lines
+  // [first_comment, last_comment], normals too from line `first_normal` on; some lines replaced
+  // (numbered from 1)
+  auto xyz = [](const std::vector<std::pair<int, std::string>>& replaced, int first_comment = 0,
+                int last_comment = 0, int first_normal = 5001) {
+    std::string text;
+    for(int line = 1; line <= 5000; ++line)
+    {
+      auto r = std::find_if(replaced.begin(), replaced.end(), [&](const auto& p) { return p.first == line; });
+      text += r != replaced.end() ? r->second
+              : line >= first_comment && line <= last_comment
+                ? std::string()
+                : std::to_string(line) + (line >= first_normal ? " 0.5 -1 0 0 1" : " 0.5 -1");
+      text += XYZ_PADDING + "\n";
+    }
+    return text;
+  };
+  const std::vector<std::pair<std::string, std::string>> cases = {
+    {xyz({{4321, "1 2 oops"}}), "line 4321: 'oops' is not a number"},
+    {xyz({{4321, "1 inf 2"}, {4322, "x"}}), "line 4321: non-finite value 'inf'"},
+    {xyz({{4999, "1 2 3 4"}}), "line 4999: expected 3 (x y z) or 6 (x y z nx ny nz) numbers, got 4"},
+    {xyz({{3000, "1 2 3 4 5 6"}, {4500, "nan 1 2"}}), "line 3000: 6 numbers where earlier lines have 3"},
+    // the first line with numbers far into the file, in a later block
+    {xyz({{4800, "1 2 3"}}, 1, 4000, 1), "line 4800: 3 numbers where earlier lines have 6"},
+    {xyz({{4001, "1 2 3 4 5 6"}}, 1, 4000), "line 4002: 3 numbers where earlier lines have 6"},
+    // a block whose first line with numbers disagrees with an earlier block's, its own error later
+    {xyz({{4500, "x"}}, 1001, 4000, 4001), "line 4001: 6 numbers where earlier lines have 3"},
+    // a non-number before the first line with numbers of its block
+    {xyz({{20, "# 1 2 3"}, {3999, "1 2 ?"}}, 1, 4000, 1), "line 3999: '?' is not a number"},
+  };
+  for(std::size_t i = 0; i < cases.size(); ++i)
+  {
+    const std::string file = write_file("error_" + std::to_string(i) + ".xyz", cases[i].first);
+    for(unsigned int threads : {1u, 4u})
+    {
+      INFO("case " << i << ", threads: " << threads);
+      CHECK_THROWS_WITH(read_xyz_points(file, threads), cases[i].second);
+    }
+  }
 }
 
 // ------------------------------------------------------------------------------------------------

@@ -9,11 +9,21 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 /// \cond SKIP_IN_MANUAL
@@ -25,49 +35,220 @@ namespace internal {
 constexpr std::size_t XYZ_POINT_COLUMNS = 3;
 constexpr std::size_t XYZ_POINT_AND_NORMAL_COLUMNS = 6;
 
-// `x y z` or `x y z nx ny nz` per line; `#` starts a comment. Strict, with line numbers.
-inline void read_xyz(const std::string& filename, std::vector<Oriented_point_set::Point_3>& points,
-                     std::vector<Oriented_point_set::Vector_3>& normals, bool& has_normals)
+// A block holds this much at least: smaller ones cost more to hand out than to parse.
+constexpr std::size_t XYZ_SMALLEST_BLOCK_BYTES = std::size_t(1) << 20;
+
+// What one block of whole lines holds, with line numbers counted from the block's start. Parsing
+// stops at the block's first error; whether it is the file's first error, and whether the block's
+// first line with numbers agrees with the earlier blocks, only the blocks before it can say.
+struct Xyz_block
 {
-  std::ifstream in(filename);
-  std::string line;
-  std::size_t line_number = 0, columns = 0;
-  while(std::getline(in, line))
+  std::vector<Oriented_point_set::Point_3> points;
+  std::vector<Oriented_point_set::Vector_3> normals;
+  std::size_t lines = 0;
+  std::size_t first_columns = 0; // the count of numbers on its first line with numbers, 0: none
+  std::size_t first_columns_line = 0;
+  std::string error; // the message of its first error, after "line N: "
+  std::size_t error_line = 0;
+  std::exception_ptr exception; // out of memory
+};
+
+// The spaces of std::isspace in the C locale, those `>>` skips between the tokens of a line.
+inline bool is_xyz_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
+
+// Parses the token [first, last): false with `error` set when it is not a finite number. The same
+// double as std::strtod, the same errors: std::from_chars is the fast path, and whatever it does
+// not take whole (a leading '+', hex floats, out-of-range values, junk) goes to std::strtod.
+inline bool parse_xyz_number(const char* first, const char* last, double& v, std::string& error)
+{
+  const std::from_chars_result r = std::from_chars(first, last, v);
+  if(r.ec != std::errc() || r.ptr != last)
   {
-    ++line_number;
-    const std::size_t hash = line.find('#');
-    if(hash != std::string::npos)
-      line.erase(hash);
-    std::istringstream tokens(line);
-    std::vector<double> values;
-    std::string token;
-    while(tokens >> token)
+    const std::string token(first, last); // null-terminated for strtod
+    char* end = nullptr;
+    v = std::strtod(token.c_str(), &end);
+    if(end == token.c_str() || *end != '\0')
     {
-      const char* begin = token.c_str();
-      char* end = nullptr;
-      const double v = std::strtod(begin, &end);
-      if(end == begin || *end != '\0')
-        throw Input_error("line " + std::to_string(line_number) + ": '" + token + "' is not a number");
-      if(!std::isfinite(v))
-        throw Input_error("line " + std::to_string(line_number) + ": non-finite value '" + token + "'");
-      values.push_back(v);
+      error = "'" + token + "' is not a number";
+      return false;
     }
-    if(values.empty())
-      continue;
-    if(values.size() != XYZ_POINT_COLUMNS && values.size() != XYZ_POINT_AND_NORMAL_COLUMNS)
-      throw Input_error("line " + std::to_string(line_number) + ": expected 3 (x y z) or 6 (x y z nx ny nz) numbers, got " +
-                        std::to_string(values.size()));
-    if(columns == 0)
-      columns = values.size();
-    else if(values.size() != columns)
-      throw Input_error("line " + std::to_string(line_number) + ": " + std::to_string(values.size()) +
-                        " numbers where earlier lines have " + std::to_string(columns));
-    points.emplace_back(values[0], values[1], values[2]);
-    if(columns == XYZ_POINT_AND_NORMAL_COLUMNS)
-      normals.emplace_back(values[3], values[4], values[5]);
   }
-  if(in.bad())
-    throw Input_error("read error");
+  if(!std::isfinite(v))
+  {
+    error = "non-finite value '" + std::string(first, last) + "'";
+    return false;
+  }
+  return true;
+}
+
+// Parses the lines of [first, last) into `b`, as the sequential reader did, until the first error.
+inline void parse_xyz_block(const char* first, const char* last, Xyz_block& b)
+{
+  std::size_t columns = 0;
+  for(const char* line = first; line < last;)
+  {
+    const char* line_end = static_cast<const char*>(std::memchr(line, '\n', std::size_t(last - line)));
+    if(line_end == nullptr)
+      line_end = last; // a last line without '\n'
+    ++b.lines;
+    const char* hash = static_cast<const char*>(std::memchr(line, '#', std::size_t(line_end - line)));
+    const char* stop = hash ? hash : line_end;
+    double values[XYZ_POINT_AND_NORMAL_COLUMNS];
+    std::size_t count = 0;
+    for(const char* p = line;;)
+    {
+      while(p < stop && is_xyz_space(*p))
+        ++p;
+      if(p == stop)
+        break;
+      const char* token = p;
+      while(p < stop && !is_xyz_space(*p))
+        ++p;
+      double v;
+      if(!parse_xyz_number(token, p, v, b.error))
+      {
+        b.error_line = b.lines;
+        return;
+      }
+      if(count < XYZ_POINT_AND_NORMAL_COLUMNS)
+        values[count] = v;
+      ++count;
+    }
+    line = line_end == last ? last : line_end + 1;
+    if(count == 0)
+      continue;
+    if(count != XYZ_POINT_COLUMNS && count != XYZ_POINT_AND_NORMAL_COLUMNS)
+    {
+      b.error = "expected 3 (x y z) or 6 (x y z nx ny nz) numbers, got " + std::to_string(count);
+      b.error_line = b.lines;
+      return;
+    }
+    if(columns == 0)
+    {
+      columns = b.first_columns = count;
+      b.first_columns_line = b.lines;
+    }
+    else if(count != columns)
+    {
+      b.error = std::to_string(count) + " numbers where earlier lines have " + std::to_string(columns);
+      b.error_line = b.lines;
+      return;
+    }
+    b.points.emplace_back(values[0], values[1], values[2]);
+    if(count == XYZ_POINT_AND_NORMAL_COLUMNS)
+      b.normals.emplace_back(values[3], values[4], values[5]);
+  }
+}
+
+// `x y z` or `x y z nx ny nz` per line; `#` starts a comment. Strict, with line numbers. Parsed on
+// `threads` threads (0: OpenMP's default) a block of lines each; the points, and the error when
+// there is one, are those of a sequential reading, whatever the number of threads.
+inline void read_xyz(const std::string& filename, std::vector<Oriented_point_set::Point_3>& points,
+                     std::vector<Oriented_point_set::Vector_3>& normals, bool& has_normals,
+                     unsigned int threads = 0)
+{
+  // The whole file in one read when its size is known; a pipe's is not: a mebibyte at a time then.
+  std::string bytes;
+  {
+    std::ifstream in(filename, std::ios::binary);
+    std::error_code ec;
+    const std::uintmax_t size = std::filesystem::file_size(filename, ec);
+    std::size_t step = ec ? XYZ_SMALLEST_BLOCK_BYTES : std::size_t(size) + 1; // + 1: the read meets the end
+    for(std::size_t got = 0; in; step = XYZ_SMALLEST_BLOCK_BYTES)
+    {
+      bytes.resize(got + step);
+      in.read(&bytes[got], std::streamsize(step));
+      got += std::size_t(in.gcount());
+      bytes.resize(got);
+    }
+    if(in.bad())
+      throw Input_error("read error");
+  }
+
+  // About 4 blocks a thread, for balance, each of whole lines: it ends just after a '\n'.
+  std::size_t thread_number = 1;
+#ifdef _OPENMP
+  thread_number = threads != 0 ? threads : std::size_t((std::max)(omp_get_max_threads(), 1));
+#else
+  (void)threads;
+#endif
+  const std::size_t wanted = (std::max)(std::size_t(1),
+                                        (std::min)(4 * thread_number, bytes.size() / XYZ_SMALLEST_BLOCK_BYTES));
+  const char* const data = bytes.data();
+  std::vector<std::size_t> starts{0};
+  for(std::size_t i = 1; i < wanted; ++i)
+  {
+    const std::size_t from = (std::max)(starts.back(), i * (bytes.size() / wanted));
+    const void* line_end = std::memchr(data + from, '\n', bytes.size() - from);
+    if(line_end == nullptr)
+      break;
+    const std::size_t start = std::size_t(static_cast<const char*>(line_end) - data) + 1;
+    if(start == bytes.size())
+      break;
+    starts.push_back(start);
+  }
+  starts.push_back(bytes.size());
+
+  const std::int64_t block_number = std::int64_t(starts.size() - 1);
+  std::vector<Xyz_block> blocks(starts.size() - 1);
+  // An exception must not leave an OpenMP region: it is kept with its block.
+  auto parse = [&](std::int64_t i) {
+    const std::size_t k = std::size_t(i);
+    try
+    {
+      parse_xyz_block(data + starts[k], data + starts[k + 1], blocks[k]);
+    }
+    catch(...)
+    {
+      blocks[k].exception = std::current_exception();
+    }
+  };
+#ifdef _OPENMP
+  // No OpenMP region for one block: a forked child (the memory-limit tests) cannot start one.
+  if(block_number > 1 && thread_number > 1)
+  {
+#pragma omp parallel for schedule(dynamic, 1) num_threads(static_cast<int>(thread_number))
+    for(std::int64_t i = 0; i < block_number; ++i)
+      parse(i);
+  }
+  else
+#endif
+    for(std::int64_t i = 0; i < block_number; ++i)
+      parse(i);
+  bytes = std::string(); // the text is no longer needed: free it before the points are gathered
+
+  // The blocks in file order: the first error a sequential reading meets is the one thrown. The
+  // file's column count is that of its first line with numbers. A block's first line with numbers
+  // comes before any error of the block and is checked against it; if they agree, the block's own
+  // checks, made against that line, hold for the file.
+  std::size_t columns = 0, lines_before = 0, total = 0;
+  for(const Xyz_block& b : blocks)
+  {
+    if(b.exception)
+      std::rethrow_exception(b.exception);
+    if(b.first_columns != 0)
+    {
+      if(columns == 0)
+        columns = b.first_columns;
+      else if(b.first_columns != columns)
+        throw Input_error("line " + std::to_string(lines_before + b.first_columns_line) + ": " +
+                          std::to_string(b.first_columns) + " numbers where earlier lines have " +
+                          std::to_string(columns));
+    }
+    if(!b.error.empty())
+      throw Input_error("line " + std::to_string(lines_before + b.error_line) + ": " + b.error);
+    lines_before += b.lines;
+    total += b.points.size();
+  }
+  points.reserve(points.size() + total);
+  if(columns == XYZ_POINT_AND_NORMAL_COLUMNS)
+    normals.reserve(normals.size() + total);
+  for(Xyz_block& b : blocks)
+  {
+    points.insert(points.end(), b.points.begin(), b.points.end());
+    normals.insert(normals.end(), b.normals.begin(), b.normals.end());
+    b = Xyz_block(); // freed as it goes
+  }
   has_normals = (columns == XYZ_POINT_AND_NORMAL_COLUMNS);
 }
 
