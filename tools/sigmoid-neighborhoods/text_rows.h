@@ -9,9 +9,11 @@
 #define SIGMOID_NEIGHBORHOODS_TOOL_TEXT_ROWS_H
 
 #include <algorithm>
+#include <atomic>
 #include <charconv>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <ostream>
 #include <string>
 
@@ -65,7 +67,7 @@ private:
 constexpr std::size_t TEXT_ROWS_PER_BLOCK = 4096;
 
 // Writes `row(rows, i)` for i = first, ..., last - 1 to `out`, in that order, formatted on `threads`
-// threads (0: OpenMP's default). `row` appends one row, line end included, and must not throw.
+// threads (0: OpenMP's default). `row` appends one row, line end included.
 template <typename Row>
 void write_text_rows(std::ostream& out, std::size_t first, std::size_t last, unsigned int threads, const Row& row)
 {
@@ -84,17 +86,36 @@ void write_text_rows(std::ostream& out, std::size_t first, std::size_t last, uns
   if(team > 1 && blocks > 1)
   {
     // each thread formats its block, then waits for its turn to write it: formatting and writing overlap
+    // an exception (out of memory) must not leave the parallel region: the first is kept, the rows
+    // after it are not written, and it is thrown after the region
+    std::exception_ptr error;
+    std::atomic<bool> failed(false);
 #pragma omp parallel num_threads(team)
     {
       Text_rows rows;
 #pragma omp for ordered schedule(static, 1)
       for(std::ptrdiff_t b = 0; b < blocks; ++b)
       {
-        format(b, rows);
+        bool formatted = true;
+        try
+        {
+          format(b, rows);
+        }
+        catch(...)
+        {
+          formatted = false;
+#pragma omp critical(sigmoid_neighborhoods_text_rows)
+          if(!error)
+            error = std::current_exception();
+          failed.store(true);
+        }
 #pragma omp ordered
-        out.write(rows.str().data(), std::streamsize(rows.str().size()));
+        if(formatted && !failed.load())
+          out.write(rows.str().data(), std::streamsize(rows.str().size()));
       }
     }
+    if(error)
+      std::rethrow_exception(error);
     return;
   }
 #endif
