@@ -34,8 +34,13 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Point_kd_tree::Point_kd_tree(const std:
   // The top levels split node by node, each level's nodes in parallel, until there are subtrees
   // enough for every thread; then the subtrees in parallel. Each split reads and writes its own
   // positions and nodes: the tree is the sequential one for any number of threads.
+  if(threads == 1)
+  {
+    build(Pending{0, 0, n});
+    return;
+  }
   std::vector<Pending> level{Pending{0, 0, n}};
-  const std::size_t enough = threads == 1 ? 1 : 8 * std::size_t(threads == 0 ? 16 : threads);
+  const std::size_t enough = 8 * std::size_t(threads == 0 ? 16 : threads);
   while(!level.empty() && level.size() < enough)
   {
     std::vector<Pending> children(2 * level.size(), Pending{0, 0, 0});

@@ -199,13 +199,7 @@ inline bool read_binary_ply_points(const Input_file& file, std::vector<Oriented_
     normals.resize(n);
   std::vector<double> label_values(label_rank < int(ply_label_names().size()) ? n : 0);
   const std::ptrdiff_t count = std::ptrdiff_t(n);
-#ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(threads == 0 ? omp_get_max_threads() : int(threads))
-#else
-  (void)threads;
-#endif
-  for(std::ptrdiff_t i = 0; i < count; ++i)
-  {
+  auto convert = [&](std::ptrdiff_t i) {
     const unsigned char* record = records.data() + std::size_t(i) * stride;
     points[std::size_t(i)] = Oriented_point_set::Point_3(fields[X].read(record), fields[Y].read(record),
                                                          fields[Z].read(record));
@@ -214,7 +208,22 @@ inline bool read_binary_ply_points(const Input_file& file, std::vector<Oriented_
                                                              fields[NZ].read(record));
     if(!label_values.empty())
       label_values[std::size_t(i)] = label.read(record);
+  };
+#ifdef _OPENMP
+  // no OpenMP region for a small file: a forked child (the readers' limit tests) cannot start one
+  const int team = threads == 0 ? omp_get_max_threads() : int(threads);
+  if(team > 1 && count >= std::ptrdiff_t(1) << 16)
+  {
+#pragma omp parallel for schedule(static) num_threads(team)
+    for(std::ptrdiff_t i = 0; i < count; ++i)
+      convert(i);
   }
+  else
+#else
+  (void)threads;
+#endif
+    for(std::ptrdiff_t i = 0; i < count; ++i)
+      convert(i);
 
   // ply_labels_of_type()'s rule: integers of `int`, else no labels
   for(double value : label_values)

@@ -22,6 +22,7 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -147,19 +148,26 @@ inline void read_xyz(const std::string& filename, std::vector<Oriented_point_set
                      std::vector<Oriented_point_set::Vector_3>& normals, bool& has_normals,
                      unsigned int threads = 0)
 {
-  // The whole file in one read when its size is known; a pipe's is not: a mebibyte at a time then.
-  std::string bytes;
+  // The whole file in one read when its size is known; a pipe's is not: twice the room at a time
+  // then. Not zeroed first: memory is slow to touch the first time.
+  std::unique_ptr<char[]> bytes;
+  std::size_t size = 0;
   {
     std::ifstream in(filename, std::ios::binary);
     std::error_code ec;
-    const std::uintmax_t size = std::filesystem::file_size(filename, ec);
-    std::size_t step = ec ? XYZ_SMALLEST_BLOCK_BYTES : std::size_t(size) + 1; // + 1: the read meets the end
-    for(std::size_t got = 0; in; step = XYZ_SMALLEST_BLOCK_BYTES)
+    const std::uintmax_t file_size = std::filesystem::file_size(filename, ec);
+    std::size_t capacity = ec ? XYZ_SMALLEST_BLOCK_BYTES : std::size_t(file_size) + 1; // + 1: the read meets the end
+    bytes.reset(new char[capacity]);
+    while(in)
     {
-      bytes.resize(got + step);
-      in.read(&bytes[got], std::streamsize(step));
-      got += std::size_t(in.gcount());
-      bytes.resize(got);
+      if(size == capacity)
+      {
+        std::unique_ptr<char[]> larger(new char[capacity *= 2]);
+        std::memcpy(larger.get(), bytes.get(), size);
+        bytes = std::move(larger);
+      }
+      in.read(bytes.get() + size, std::streamsize(capacity - size));
+      size += std::size_t(in.gcount());
     }
     if(in.bad())
       throw Input_error("read error");
@@ -173,21 +181,21 @@ inline void read_xyz(const std::string& filename, std::vector<Oriented_point_set
   (void)threads;
 #endif
   const std::size_t wanted = (std::max)(std::size_t(1),
-                                        (std::min)(4 * thread_number, bytes.size() / XYZ_SMALLEST_BLOCK_BYTES));
-  const char* const data = bytes.data();
+                                        (std::min)(4 * thread_number, size / XYZ_SMALLEST_BLOCK_BYTES));
+  const char* const data = bytes.get();
   std::vector<std::size_t> starts{0};
   for(std::size_t i = 1; i < wanted; ++i)
   {
-    const std::size_t from = (std::max)(starts.back(), i * (bytes.size() / wanted));
-    const void* line_end = std::memchr(data + from, '\n', bytes.size() - from);
+    const std::size_t from = (std::max)(starts.back(), i * (size / wanted));
+    const void* line_end = std::memchr(data + from, '\n', size - from);
     if(line_end == nullptr)
       break;
     const std::size_t start = std::size_t(static_cast<const char*>(line_end) - data) + 1;
-    if(start == bytes.size())
+    if(start == size)
       break;
     starts.push_back(start);
   }
-  starts.push_back(bytes.size());
+  starts.push_back(size);
 
   const std::int64_t block_number = std::int64_t(starts.size() - 1);
   std::vector<Xyz_block> blocks(starts.size() - 1);
@@ -215,7 +223,7 @@ inline void read_xyz(const std::string& filename, std::vector<Oriented_point_set
 #endif
     for(std::int64_t i = 0; i < block_number; ++i)
       parse(i);
-  bytes = std::string(); // the text is no longer needed: free it before the points are gathered
+  bytes.reset(); // the text is no longer needed: freed before the points are gathered
 
   // The blocks in file order: the first error a sequential reading meets is the one thrown. The
   // file's column count is that of its first line with numbers. A block's first line with numbers
