@@ -13,6 +13,7 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_xyz.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "test_models.h"
 #include "test_scratch.h"
 
 #include <catch2/catch.hpp>
@@ -555,8 +556,6 @@ std::vector<SN::Oriented_point_set::Point_3> read_xyz_points(const std::string& 
   CHECK_FALSE(has_normals);
   return points;
 }
-
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; }
 
 } // namespace
 

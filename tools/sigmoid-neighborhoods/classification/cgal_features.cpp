@@ -105,8 +105,14 @@ void for_each_scale(std::size_t first, std::size_t last, unsigned int threads, c
 void append_columns(const CGAL::Classification::Feature_set& features, std::size_t size, unsigned int threads,
                     std::vector<Feature_column>& columns)
 {
+  // allocated before the parallel loop: an exception (out of memory) must not leave it
   const std::size_t first = columns.size();
   columns.resize(first + features.size());
+  for(std::size_t f = 0; f < features.size(); ++f)
+  {
+    columns[first + f].name = features[f]->name();
+    columns[first + f].values.resize(size);
+  }
   const std::ptrdiff_t count = std::ptrdiff_t(features.size());
 #ifdef _OPENMP
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads == 0 ? omp_get_max_threads() : int(threads))
@@ -114,8 +120,6 @@ void append_columns(const CGAL::Classification::Feature_set& features, std::size
   for(std::ptrdiff_t f = 0; f < count; ++f)
   {
     Feature_column& c = columns[first + std::size_t(f)];
-    c.name = features[std::size_t(f)]->name();
-    c.values.resize(size);
     for(std::size_t i = 0; i < size; ++i)
       c.values[i] = features[std::size_t(f)]->value(i);
   }

@@ -54,8 +54,9 @@ Merged_positions merge_equal_positions(const std::vector<Point>& points, const s
     return pa < pb || (!(pb < pa) && a < b);
   };
 #ifdef _OPENMP
+  // no OpenMP region for a small set: a forked child (the readers' limit tests) cannot start one
   const int team = threads == 0 ? omp_get_max_threads() : int(threads);
-  if(team > 1)
+  if(team > 1 && order.size() >= (std::size_t(1) << 16))
     __gnu_parallel::sort(order.begin(), order.end(), before,
                          __gnu_parallel::default_parallel_tag(static_cast<__gnu_parallel::_ThreadIndex>(team)));
   else
