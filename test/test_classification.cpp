@@ -10,6 +10,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/Classification/add_point_features.h>
+#include <CGAL/Sigmoid_neighborhoods/Classification/compute_anchored_cgal_features.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_height_features.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_point_features.h>
 #include <CGAL/Classification/ETHZ/Random_forest_classifier.h>
@@ -323,4 +324,143 @@ TEST_CASE("the groups cgal, cgal-metric and cgal-grid: CGAL's generator bit for 
       CHECK(equal == model.points.size());
     }
   }
+}
+
+TEST_CASE("cgal-metric with grids anchored at the origin: CGAL's generator where the anchors agree, a tile the "
+          "union's values",
+          "[classification][cgal]")
+{
+  namespace SNC = SN::Classification;
+  auto same_column = [](const std::vector<double>& x, const std::vector<double>& y) {
+    if(x.size() != y.size())
+      return false;
+    for(std::size_t i = 0; i < x.size(); ++i)
+      if(!same_bits(x[i], y[i]))
+        return false;
+    return true;
+  };
+  // The scene moved so that its lowest x and y are 0: CGAL's grids, anchored at the bounding box,
+  // then have the origin's cells (the voxel a power of two, its coarsest cell 2 m)
+  SN::Oriented_point_set model;
+  const Point_list points = scene(11);
+  double min_x = points.front().first.x(), min_y = points.front().first.y();
+  for(const auto& p : points)
+  {
+    min_x = std::min(min_x, p.first.x());
+    min_y = std::min(min_y, p.first.y());
+  }
+  for(const auto& p : points)
+    model.points.emplace_back(p.first.x() - min_x, p.first.y() - min_y, p.first.z());
+  std::vector<sigmoid_tool::Feature_column> expected;
+  sigmoid_tool::append_cgal_features(model, 3, 0.5, 1, expected);
+  const std::size_t n = model.points.size();
+  for(const unsigned int threads : {1u, 2u, 3u})
+  {
+    std::vector<sigmoid_tool::Feature_column> columns;
+    sigmoid_tool::append_anchored_cgal_features(model, 3, 0.5, threads, columns, false);
+    REQUIRE(columns.size() == expected.size());
+    for(std::size_t f = 0; f < columns.size(); ++f)
+    {
+      INFO(columns[f].name);
+      REQUIRE(columns[f].name == expected[f].name);
+      // the terrain model in float, not in 256 steps of the height range; the height above in double
+      const bool elevation = columns[f].name.rfind("elevation", 0) == 0;
+      const bool above = columns[f].name.rfind("height_above", 0) == 0;
+      std::size_t equal = 0;
+      double largest = 0.;
+      for(std::size_t i = 0; i < n; ++i)
+      {
+        const double a = columns[f].values[i], b = expected[f].values[i];
+        equal += a == b;
+        largest = std::max(largest, std::abs(a - b));
+      }
+      if(elevation)
+        CHECK(largest <= 4. / 255. + 1e-4); // the scene's heights span about 4 m
+      else if(above)
+        CHECK(largest <= 1e-5);
+      else
+        CHECK(equal == n);
+    }
+  }
+  // the grids alone: the same columns
+  std::vector<sigmoid_tool::Feature_column> all, grids;
+  sigmoid_tool::append_anchored_cgal_features(model, 3, 0.5, 2, all, false);
+  sigmoid_tool::append_anchored_cgal_features(model, 3, 0.5, 2, grids, true);
+  REQUIRE(grids.size() == 3 * 5);
+  CHECK(grids.front().name == "vertical_dispersion_0");
+  for(const auto& g : grids)
+  {
+    std::size_t f = 0;
+    while(f < all.size() && all[f].name != g.name)
+      ++f;
+    REQUIRE(f < all.size());
+    CHECK(same_column(g.values, all[f].values));
+  }
+
+  // A tile of a larger terrain (houses of 8 m, trees, noise, coordinates far from the origin as a
+  // survey's) read with the halo of its points' reach: the union's values, bit for bit
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> across(0., 64.), unit(0., 1.);
+  std::normal_distribution<double> noise(0., 0.05);
+  SN::Oriented_point_set survey;
+  for(int i = 0; i < 9000; ++i)
+  {
+    const double x = across(rng), y = across(rng);
+    double z = 0.05 * x + 0.5 * std::sin(0.2 * y) + noise(rng);
+    if(std::fmod(x, 16.) < 8. && std::fmod(y, 16.) < 8.)
+      z += 6.;
+    else if(unit(rng) < 0.2)
+      z += 10. * unit(rng);
+    survey.points.emplace_back(652000.25 + x, 6862000.75 + y, 120. + z);
+  }
+  const CGAL::Bbox_2 tile(652024., 6862024., 652040., 6862040.);
+  auto in_box = [](const SN::Oriented_point_set::Point_3& p, const CGAL::Bbox_2& b, double halo) {
+    return p.x() >= b.xmin() - halo && p.x() < b.xmax() + halo && p.y() >= b.ymin() - halo && p.y() < b.ymax() + halo;
+  };
+  // the union's points ordered with the tile's first, as a tile reads them: [0, core) the tile's
+  SN::Oriented_point_set ordered;
+  std::size_t core = 0;
+  for(int pass = 0; pass < 2; ++pass)
+    for(const auto& p : survey.points)
+      if(in_box(p, tile, 0.) == (pass == 0))
+      {
+        ordered.points.push_back(p);
+        core += pass == 0;
+      }
+  const double halo = sigmoid_tool::anchored_cgal_halo_width(ordered, 3, 0.5, false, 2, tile, 0, core);
+  const double grid_reach = SNC::anchored_cgal_grid_reach(0.5f, 3);
+  CHECK(grid_reach == 14.); // the elevation's 6 cells of 2 m and the point's own
+  CHECK(halo >= grid_reach);
+  CHECK(halo < 20.);
+  SN::Oriented_point_set read;
+  for(const auto& p : ordered.points)
+    if(in_box(p, tile, halo))
+      read.points.push_back(p);
+  REQUIRE(read.points.size() < ordered.points.size());
+  std::vector<sigmoid_tool::Feature_column> whole, part;
+  sigmoid_tool::append_anchored_cgal_features(ordered, 3, 0.5, 2, whole, false);
+  sigmoid_tool::append_anchored_cgal_features(read, 3, 0.5, 1, part, false);
+  REQUIRE(whole.size() == part.size());
+  for(std::size_t f = 0; f < whole.size(); ++f)
+  {
+    INFO(whole[f].name);
+    const std::vector<double> tile_values(part[f].values.begin(), part[f].values.begin() + std::ptrdiff_t(core));
+    const std::vector<double> union_values(whole[f].values.begin(), whole[f].values.begin() + std::ptrdiff_t(core));
+    CHECK(same_column(tile_values, union_values));
+  }
+  // a narrower halo loses the terrain model of some points (the test can fail)
+  SN::Oriented_point_set narrow;
+  for(const auto& p : ordered.points)
+    if(in_box(p, tile, 4.))
+      narrow.points.push_back(p);
+  std::vector<sigmoid_tool::Feature_column> cut;
+  sigmoid_tool::append_anchored_cgal_features(narrow, 3, 0.5, 2, cut, true);
+  REQUIRE(cut[5].name == "elevation_2");
+  std::size_t elevation = 0;
+  while(whole[elevation].name != "elevation_2")
+    ++elevation;
+  std::size_t differing = 0;
+  for(std::size_t i = 0; i < core; ++i)
+    differing += !same_bits(cut[5].values[i], whole[elevation].values[i]);
+  CHECK(differing > 0);
 }

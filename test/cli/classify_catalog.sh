@@ -3,9 +3,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 #
 # classify predict on a catalog of tiles: small models trained on one IGN tile (the package's k-neighbor
-# groups and heights; the pyramid groups) predict each tile with its halo and the union in one run; the tiles' PLY vertices, concatenated in the catalog's order, equal
-# the union's byte for byte (positions, labels, confidences, truth, colors). Then the refusals with
-# --tile (the group cgal, --graphcut): exit 2, one line, nothing written.
+# groups and heights; the pyramid groups; the default set) predict each tile with its halo and the
+# union in one run; the tiles' PLY vertices, concatenated in the catalog's order, equal the union's
+# byte for byte (positions, labels, confidences, truth, colors). Then the refusals with
+# --tile (the group cgal, cgal-metric in an older model, --graphcut): exit 2, one line, nothing written.
 # usage: classify_catalog.sh TOOL LABELED_FOLDER PYTHON
 set -eu
 tool=$1
@@ -98,8 +99,18 @@ grep -q ' readings, ' "$dir/pyramid/tiles/$first_tile.txt" || fail "a 10 m halo 
   2> "$dir/pyramid_default.txt" || fail "predict $first_tile (pyramid): $(cat "$dir/pyramid_default.txt")"
 cmp -s "$dir/pyramid_default.ply" "$dir/pyramid/tiles/$first_tile.ply" \
   || fail "the pyramid's tile from the default halo differs from the one from 10 m"
+pyramid_done=$(date +%s)
+
+# the default set (cgal-metric's grids anchored at the origin, multiscale-sigmoid, pyramid): every tile
+# with its halo classified as in the union
+"$tool" classify train "$labeled/ign_lidarhd_77050_627755.las" -o "$dir/default.bin" --trees 4 --depth 12 \
+  2> "$dir/train_default.txt" || fail "train default: $(cat "$dir/train_default.txt")"
+grep -q '"groups":\["cgal-metric","multiscale-sigmoid","pyramid"\]' "$dir/default.bin" || fail "not the default set"
+grep -q '"cgal_grid_anchor":"origin"' "$dir/default.bin" || fail "the default model's grids are not anchored at the origin"
+predict_and_compare default.bin default
 end=$(date +%s)
-echo "train + 6 tiles + union: $((tiles_done - start)) s, the pyramid's: $((end - tiles_done)) s"
+echo "train + 6 tiles + union: $((tiles_done - start)) s, the pyramid's: $((pyramid_done - tiles_done)) s," \
+  "the default's: $((end - pyramid_done)) s"
 
 # refusals with --tile: CGAL's generator (a model whose groups name cgal; refused before its forest is
 # read) and the graph-cut; nothing written
@@ -110,6 +121,13 @@ tail -n +3 "$dir/model.bin" >> "$dir/cgal_model.bin"
 grep -q '"cgal","k20"' "$dir/cgal_model.bin" || fail "the model with the group cgal was not made"
 expect_refusal "feature group cgal depends on the whole point set" \
   "$tool" classify predict "$dir/cgal_model.bin" --catalog "$catalog" --tile "$first" -o "$dir/none.ply"
+# a model of cgal-metric written before the grids were anchored at the origin (CGAL's, at the bounding box)
+sed -n 2p "$dir/default.bin" | grep -q '"cgal_grid_anchor":"origin"' || fail "the anchor is not on the model's second line"
+{ head -1 "$dir/default.bin"; sed -n 2p "$dir/default.bin" | sed 's/"cgal_grid_anchor":"origin"/"cgal_grid_anchor":"bounding box"/'; } \
+  > "$dir/bbox_model.bin"
+tail -n +3 "$dir/default.bin" >> "$dir/bbox_model.bin"
+expect_refusal "feature group cgal-metric depends on the whole point set" \
+  "$tool" classify predict "$dir/bbox_model.bin" --catalog "$catalog" --tile "$first" -o "$dir/none.ply"
 expect_refusal "--graphcut minimises over the whole point set" \
   "$tool" classify predict "$dir/model.bin" --catalog "$catalog" --tile "$first" -o "$dir/none.ply" --graphcut 0.2
 expect_refusal "--tile and --halo go with --catalog" \

@@ -31,10 +31,10 @@ void refuse_inexact_tile(const Classifier_settings& settings, double graphcut)
   const std::string groups = whole_set_groups(settings.features);
   if(!groups.empty())
     throw Usage_error("classify predict --tile: the model's feature group " + groups +
-                      " depends on the whole point set (CGAL's generator anchors its grids at the bounding box; "
-                      "cgal takes its scales from the average spacing), so a tile would not get the union's "
-                      "features; predict the "
-                      "union (--catalog without --tile) or use a model without it");
+                      " depends on the whole point set (cgal takes its scales from the average spacing; models "
+                      "trained before the grids were anchored at the origin have CGAL's, anchored at the bounding "
+                      "box), so a tile would not get the union's features; predict the union (--catalog without "
+                      "--tile), train the model again or use one without it");
   if(graphcut > 0.)
     throw Usage_error("classify predict --tile: --graphcut minimises over the whole point set, so a tile would not "
                       "get the union's labels; predict the union (--catalog without --tile) or leave --graphcut out");
@@ -72,9 +72,10 @@ int run_classify_predict(int argc, char** argv)
     refuse_inexact_tile(settings, graphcut);
   Phase_times times;
   progress("reading");
-  // the normals' neighbor rows kept for the features; a tile's halo holds them and the height cells,
-  // and is widened until the pyramid's representatives and rows near the tile are checked to be the union's
-  // --halo WIDTH: the pyramid's first halo too (the heights' cells still hold)
+  // the normals' neighbor rows kept for the features; a tile's halo holds them and the grids' cells,
+  // and is widened until the pyramid's representatives and rows and cgal-metric's neighbors near the
+  // tile are checked to be the union's
+  // --halo WIDTH: the pyramid's first halo too (the cells still hold)
   double minimum_halo = cell_halo(settings.features, !args.has("--halo"));
   Input_points in;
   unsigned int readings = 0;
@@ -85,13 +86,13 @@ int run_classify_predict(int argc, char** argv)
     readings += in.halo.readings;
     if(!in.is_tile)
       break;
-    const double needed = pyramid_halo_width_of_tile(in.model, settings.features, in.tile_extent, in.first, in.last);
+    const double needed = checked_halo_width_of_tile(in.model, settings.features, in.tile_extent, in.first, in.last);
     if(needed <= in.halo.halo_width)
       break;
     if(readings >= 16)
       throw Usage_error(in.source + ": no halo up to " + number_fixed(in.halo.halo_width, 1) +
-                        " holds the pyramid's representatives and rows near tile " + in.tile_name);
-    progress("reading a wider halo for the pyramid");
+                        " holds the neighborhoods near tile " + in.tile_name);
+    progress("reading a wider halo for the neighborhoods");
     minimum_halo = std::max(needed, 1.5 * in.halo.halo_width);
   }
   in.halo.readings = readings;

@@ -3,6 +3,9 @@
 
 #include "cgal_features.h"
 
+#include <CGAL/Sigmoid_neighborhoods/Classification/compute_anchored_cgal_features.h>
+#include <CGAL/Sigmoid_neighborhoods/concurrency.h>
+
 #include <CGAL/Classification/Feature_set.h>
 #include <CGAL/Classification/Point_set_feature_generator.h>
 #include <CGAL/Point_set_3.h>
@@ -217,6 +220,39 @@ void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scal
     features.end_parallel_additions();
   }
   append_columns(features, points.size(), threads, columns);
+}
+
+void append_anchored_cgal_features(const SN::Oriented_point_set& model, unsigned int scales, double voxel,
+                                   unsigned int threads, std::vector<Feature_column>& columns, bool grid_only)
+{
+  namespace SNC = SN::Classification;
+  std::vector<std::pair<std::string, std::vector<float>>> features;
+  SNC::compute_anchored_cgal_features<SN::Parallel_if_available_tag>(
+    model.points, float(voxel), scales, grid_only ? SNC::Anchored_cgal_features::GRIDS_ONLY : SNC::Anchored_cgal_features::ALL,
+    std::back_inserter(features), SN::parameters::number_of_threads(threads));
+  for(auto& f : features)
+  {
+    columns.push_back(Feature_column{f.first, std::vector<double>(f.second.begin(), f.second.end())});
+    std::vector<float>().swap(f.second);
+  }
+}
+
+double anchored_cgal_grid_reach(const Feature_options& o)
+{
+  return SN::Classification::anchored_cgal_grid_reach(float(o.cgal_voxel), o.cgal_scales);
+}
+
+double anchored_cgal_halo_width(const SN::Oriented_point_set& model, unsigned int scales, double voxel, bool grid_only,
+                                unsigned int threads, const CGAL::Bbox_2& extent, std::size_t first, std::size_t last)
+{
+  double width = SN::Classification::anchored_cgal_grid_reach(float(voxel), scales) * (1. + 1e-6);
+  if(grid_only || first == last)
+    return width;
+  const std::vector<double> reach = SN::Classification::anchored_cgal_neighbor_reach<SN::Parallel_if_available_tag>(
+    model.points, float(voxel), scales, first, last, SN::parameters::number_of_threads(threads));
+  for(std::size_t i = first; i < last; ++i)
+    width = std::max(width, halo_needed(model.points[i].x(), model.points[i].y(), extent, reach[i - first]));
+  return width;
 }
 
 } // namespace sigmoid_tool

@@ -11,6 +11,9 @@
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
 
+#include <CGAL/Bbox_2.h>
+
+#include <cstddef>
 #include <vector>
 
 namespace sigmoid_tool {
@@ -26,6 +29,19 @@ namespace sigmoid_tool {
 // below and above, vertical range), without the neighborhoods and eigen analyses; needs `voxel` > 0.
 void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scales, double voxel, unsigned int threads,
                           std::vector<Feature_column>& columns, bool grid_only = false);
+
+// The same features of cgal-metric (or cgal-grid: `grid_only`) with the grids anchored at the origin
+// (SN::Classification::compute_anchored_cgal_features()), so that a tile with its halo gets the
+// union's values: the groups' features in models that say so (Feature_options::cgal_grids_at_origin).
+void append_anchored_cgal_features(const SN::Oriented_point_set& model, unsigned int scales, double voxel,
+                                   unsigned int threads, std::vector<Feature_column>& columns, bool grid_only);
+
+// The halo that the anchored features of the points `first` ... `last - 1` (a tile of extent
+// `extent`) need to be the union's, checked on `model`, the tile and its halo: the widest of their
+// neighbors' reach and of the grids' (anchored_cgal_grid_reach()).
+double anchored_cgal_halo_width(const SN::Oriented_point_set& model, unsigned int scales, double voxel,
+                                bool grid_only, unsigned int threads, const CGAL::Bbox_2& extent, std::size_t first,
+                                std::size_t last);
 
 } // namespace sigmoid_tool
 

@@ -48,6 +48,7 @@ inline nlohmann::json settings_json(const Classifier_settings& s)
                    {"scales", s.features.scales},         {"sigmoid", {s.features.sigmoid_a, s.features.sigmoid_b}},
                    {"cell_sizes", s.features.cell_sizes}, {"cgal_scales", s.features.cgal_scales}};
   j["features"]["cgal_voxel"] = s.features.cgal_voxel;
+  j["features"]["cgal_grid_anchor"] = s.features.cgal_grids_at_origin ? "origin" : "bounding box";
   // the pyramid's scales in metres, so that the model applies them at any density; cell_sizes is
   // what cell and levels give, for the reader
   j["features"]["pyramid"] = {{"cell", s.features.pyramid_cell},
@@ -89,6 +90,11 @@ inline Classifier_settings settings_from_json(const nlohmann::json& j, const std
     s.features.cgal_scales = f.at("cgal_scales").get<unsigned int>();
     if(f.contains("cgal_voxel")) // models written before it have none (nor the group cgal-metric)
       s.features.cgal_voxel = f.at("cgal_voxel").get<double>();
+    // models written before the anchor have CGAL's grids, anchored at the bounding box
+    const std::string anchor = f.value("cgal_grid_anchor", std::string("bounding box"));
+    if(anchor != "origin" && anchor != "bounding box")
+      throw bad("unknown cgal_grid_anchor '" + anchor + "'");
+    s.features.cgal_grids_at_origin = anchor == "origin";
     if(sigmoid.size() != 2 || !(sigmoid[0] >= 0. && sigmoid[0] <= sigmoid[1] && sigmoid[1] <= CGAL_PI))
       throw bad("the sigmoid is not 0 <= a <= b <= pi");
     s.features.sigmoid_a = sigmoid[0];

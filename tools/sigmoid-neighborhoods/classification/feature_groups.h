@@ -100,10 +100,7 @@ inline double pyramid_halo_width(const SN::Oriented_point_set& model, const Feat
   auto distance = [&](std::size_t i, std::size_t j) { return std::sqrt(CGAL::squared_distance(model.points[i], model.points[j])); };
   // the halo point i needs to see every union point within `reach` of it
   auto needed = [&](std::size_t i, double reach) {
-    const auto& p = model.points[i];
-    const double inside =
-      std::min({p.x() - extent.xmin(), extent.xmax() - p.x(), p.y() - extent.ymin(), extent.ymax() - p.y()});
-    return reach * (1. + 1e-9) + 1e-9 * (std::abs(p.x()) + std::abs(p.y())) - inside;
+    return halo_needed(model.points[i].x(), model.points[i].y(), extent, reach);
   };
   auto normal_reach = [&](std::size_t i) {
     if(normal_neighbors == 0)
@@ -184,7 +181,9 @@ std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set
   for(const std::string& group : o.groups)
   {
     progress(group);
-    if(group == "cgal" || group == "cgal-metric" || group == "cgal-grid")
+    if((group == "cgal-metric" || group == "cgal-grid") && o.cgal_grids_at_origin)
+      append_anchored_cgal_features(model, o.cgal_scales, o.cgal_voxel, o.threads, columns, group == "cgal-grid");
+    else if(group == "cgal" || group == "cgal-metric" || group == "cgal-grid")
       append_cgal_features(model, o.cgal_scales, group == "cgal" ? 0. : o.cgal_voxel, o.threads, columns,
                            group == "cgal-grid");
     else if(group == "k20" || group == "multiscale" || group == "multiscale-sigmoid")

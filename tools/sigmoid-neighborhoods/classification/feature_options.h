@@ -12,6 +12,8 @@
 
 #include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
 
+#include <CGAL/Bbox_2.h>
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -38,6 +40,10 @@ struct Feature_options
   double sigmoid_a = CGAL_PI / 6., sigmoid_b = CGAL_PI / 3.; // multiscale-sigmoid's weights
   std::vector<double> cell_sizes{2.5, 5., 10.};        // group height
   unsigned int cgal_scales = 5;                        // groups cgal, cgal-metric and cgal-grid
+  // groups cgal-metric and cgal-grid: their planimetric grids anchored at the origin (a tile with its
+  // halo gets the union's features); false in models written before, whose grids CGAL anchors at the
+  // bounding box of the point set
+  bool cgal_grids_at_origin = true;
   // groups cgal-metric and cgal-grid: the voxel of CGAL's first scale in metres, doubled per scale (the group cgal
   // takes CGAL's own choice, the mean range of each file's 12 nearest neighbors, which follows the
   // file's density: a model trained at one density reads other scales at another)
@@ -80,7 +86,7 @@ inline const char* FEATURE_GROUPS_USAGE =
   "      cgal            CGAL's Point_set_feature_generator on 5 scales (eigenvalues, heights, ...), the\n"
   "                      first from each file's spacing, as CGAL chooses it\n"
   "      cgal-metric     the same on scales in metres: --cgal-voxel 0.5 m times 1, 2, 4 ... (a model\n"
-  "                      applies at another density)\n"
+  "                      applies at another density), its grids anchored at the origin (tile by tile)\n"
   "      cgal-grid       the features of cgal-metric's planimetric grids alone (vertical dispersion,\n"
   "                      elevation, heights below and above, vertical range): no eigen analysis\n"
   "      k20             the eigen features (linearity ... normal_z) at k = 20, equal weights\n"
@@ -151,13 +157,19 @@ inline unsigned int largest_neighborhood(const Feature_options& o)
   return k;
 }
 
-// The halo the groups height and pyramid need around a tile (0: none). Height: a cell meeting the
+// How far the grids of the groups cgal-metric and cgal-grid reach when anchored at the origin
+// (SN::Classification::anchored_cgal_grid_reach(), cgal_features.cpp).
+double anchored_cgal_grid_reach(const Feature_options& o);
+
+// The halo the groups height, pyramid, cgal-metric and cgal-grid need around a tile (0: none). Height: a cell meeting the
 // tile lies within its side of the tile, so a halo that wide holds every point of the tile's cells.
 // The relative margin covers the rounding of x / side at the cells' borders while |x| / side stays
 // below 10^9. Pyramid: a first guess only, 4 coarsest cells (a point's nearest representative within
 // a cell's diagonal, 1.7 cells, the k = 10 nearest of that one within about 2 cells on a surface, and
 // their cells; the six IGN tiles need 3.4 to 3.9); pyramid_halo_width() (feature_groups.h) checks it
 // on what was read, and the tile is read again with a wider halo when it does not hold.
+// cgal-metric and cgal-grid anchored at the origin: their grids' windows, with the same margin; their
+// neighbors are checked on what was read, as the pyramid's (anchored_cgal_halo_width()).
 // `pyramid_guess` false: what the cells need alone (the caller gives the pyramid's first halo).
 inline double cell_halo(const Feature_options& o, bool pyramid_guess = true)
 {
@@ -169,16 +181,31 @@ inline double cell_halo(const Feature_options& o, bool pyramid_guess = true)
     halo = std::max(halo, o.pyramid_cell_sizes().back() * (1. + 1e-6)); // the heights in its cells
   if(pyramid_guess && internal_classification::has_pyramid(o))
     halo = std::max(halo, 4. * o.pyramid_cell_sizes().back());
+  if(o.cgal_grids_at_origin && (has_group(o, "cgal-metric") || has_group(o, "cgal-grid")))
+    halo = std::max(halo, anchored_cgal_grid_reach(o) * (1. + 1e-6)); // the grids' windows
   return halo;
 }
 
 // The groups of `o` that depend on the whole point set (the cgal group: CGAL's generator takes its
-// scales from the average spacing and anchors its grids at the bounding box), so that a tile with
-// any halo gets other values than the union: "" when there is none.
+// scales from the average spacing; cgal-metric and cgal-grid in older models, whose grids CGAL anchors
+// at the bounding box), so that a tile with any halo gets other values than the union: "" when there
+// is none.
 inline std::string whole_set_groups(const Feature_options& o)
 {
   using internal_classification::has_group;
-  return has_group(o, "cgal") ? "cgal" : has_group(o, "cgal-metric") ? "cgal-metric" : has_group(o, "cgal-grid") ? "cgal-grid" : "";
+  if(has_group(o, "cgal"))
+    return "cgal";
+  if(o.cgal_grids_at_origin)
+    return "";
+  return has_group(o, "cgal-metric") ? "cgal-metric" : has_group(o, "cgal-grid") ? "cgal-grid" : "";
+}
+
+// How much wider than `extent` a tile's halo must be for a point at (x, y) to see every point
+// within `reach` of it (0 or less: the extent alone does), with a relative margin for rounding.
+inline double halo_needed(double x, double y, const CGAL::Bbox_2& extent, double reach)
+{
+  const double inside = std::min({x - extent.xmin(), extent.xmax() - x, y - extent.ymin(), extent.ymax() - y});
+  return reach * (1. + 1e-9) + 1e-9 * (std::abs(x) + std::abs(y)) - inside;
 }
 
 } // namespace sigmoid_tool

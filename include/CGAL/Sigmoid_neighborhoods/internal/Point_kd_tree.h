@@ -95,6 +95,8 @@ public:
   // a second search, never a wrong result.
   void nearest(std::uint32_t i, std::size_t k, std::vector<Neighbor>& result,
                double squared_bound = (std::numeric_limits<double>::infinity)()) const;
+  // The min(k, n) nearest points to the position `query` (in the set or not), ordered by is_nearer().
+  void nearest(const Double_point& query, std::size_t k, std::vector<Neighbor>& result) const;
 
 
   // The points j != i with squared distance to point `i` at most `squared_radius`, ordered by
@@ -134,6 +136,10 @@ private:
     const double dx = p.x() - q[0], dy = p.y() - q[1], dz = p.z() - q[2];
     return dx * dx + dy * dy + dz * dz;
   }
+  static constexpr std::uint32_t NO_POINT = (std::numeric_limits<std::uint32_t>::max)();
+  // The k nearest points to q other than point `i` (NO_POINT: any), k at most the points there are.
+  void nearest_to(const double* q, std::uint32_t i, std::size_t k, std::vector<Neighbor>& result,
+                  double squared_bound) const;
   template <typename Visit_leaf, typename Bound>
   void descend(std::uint32_t node, const double* q, double* gap, const Visit_leaf& visit, const Bound& bound) const;
 

@@ -172,13 +172,26 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest(std::uint32
                                                                     std::vector<Neighbor>& result,
                                                                     double squared_bound) const
 {
-  result.clear();
   const std::size_t n = m_index.size();
-  k = (std::min)(k, n == 0 ? std::size_t(0) : n - 1);
-  if(k == 0)
-    return;
   const Double_point& query = (*m_points)[i];
   const double q[3] = {query.x(), query.y(), query.z()};
+  nearest_to(q, i, (std::min)(k, n == 0 ? std::size_t(0) : n - 1), result, squared_bound);
+}
+
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest(const Double_point& query, std::size_t k,
+                                                                    std::vector<Neighbor>& result) const
+{
+  const double q[3] = {query.x(), query.y(), query.z()};
+  nearest_to(q, NO_POINT, (std::min)(k, m_index.size()), result, (std::numeric_limits<double>::infinity)());
+}
+
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest_to(const double* q, std::uint32_t i, std::size_t k,
+                                                                       std::vector<Neighbor>& result,
+                                                                       double squared_bound) const
+{
+  result.clear();
+  if(k == 0)
+    return;
   double gap[3] = {0., 0., 0.};
   if(k <= SORTED_INSERTION_K)
   {
@@ -209,7 +222,7 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest(std::uint32
     };
     descend(0, q, gap, visit, [&] { return threshold; });
     if(result.size() < k) // the caller's bound was too small
-      nearest(i, k, result);
+      nearest_to(q, i, k, result, (std::numeric_limits<double>::infinity)());
     return;
   }
   // Candidates are gathered unordered below a threshold, the k-th nearest distance among those
@@ -241,7 +254,7 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest(std::uint32
   descend(0, q, gap, visit, [&] { return threshold; });
   if(result.size() < k) // the caller's bound was too small
   {
-    nearest(i, k, result);
+    nearest_to(q, i, k, result, (std::numeric_limits<double>::infinity)());
     return;
   }
   if(result.size() > k)
