@@ -7,8 +7,11 @@
 
 #include "test_models.h"
 #include "classification/cgal_features.h"
+#include "classification/classifier_model.h"
+#include "classification/classify_common.h"
 
 #include <CGAL/Sigmoid_neighborhoods.h>
+#include <CGAL/Sigmoid_neighborhoods/Classification/Ethz_forest.h>
 #include <CGAL/Sigmoid_neighborhoods/Classification/add_point_features.h>
 #include <CGAL/Sigmoid_neighborhoods/Classification/compute_anchored_cgal_features.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_height_features.h>
@@ -24,6 +27,7 @@
 #include <cstring>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -272,6 +276,96 @@ TEST_CASE("point features enter a CGAL Feature_set and train CGAL's random fores
   for(std::size_t i = 0; i < points.size(); ++i)
     correct += predicted[i] == truth[i];
   CHECK(correct >= points.size() * 98 / 100);
+
+  // The tool's prediction (the forest's trees on the package's loop) equals CGAL's classify() with
+  // the confidences, on any thread count, a non-finite value included
+  namespace SNT = sigmoid_tool::classification;
+  SNT::Featured_file file;
+  file.path = "scene";
+  file.model.points = positions;
+  sigmoid_tool::Classifier_settings settings;
+  settings.labels.names = {"roof", "tree"};
+  for(std::size_t f = 0; f < feature_set.size(); ++f)
+  {
+    sigmoid_tool::Feature_column column{feature_set[f]->name(), {}};
+    for(std::size_t i = 0; i < points.size(); ++i)
+      column.values.push_back(feature_set[f]->value(i));
+    settings.feature_names.push_back(column.name);
+    file.columns.push_back(column);
+  }
+  file.columns[3].values[17] = std::numeric_limits<double>::quiet_NaN();
+  CGAL::Classification::Feature_set with_nan;
+  sigmoid_tool::fill_feature_set(file.columns, settings.feature_names, with_nan);
+  CGAL::Classification::ETHZ::Random_forest_classifier cgal_forest(labels, with_nan);
+  std::stringstream bytes;
+  classifier.save_configuration(bytes);
+  cgal_forest.load_configuration(bytes);
+  std::vector<int> cgal_classes(points.size(), -1);
+  std::vector<std::vector<float>> cgal_confidence(2, std::vector<float>(points.size()));
+  CGAL::Classification::classify<CGAL::Sequential_tag>(points, labels, cgal_forest, cgal_classes, cgal_confidence);
+  for(const unsigned int threads : {1u, 2u, 3u})
+  {
+    settings.features.threads = threads;
+    const SNT::Prediction p = SNT::predict(file, settings, bytes.str(), nullptr, 0.);
+    CHECK(p.classes == cgal_classes);
+    CHECK(p.confidence == cgal_confidence);
+    // from a forest in memory, as classify experiment hands it
+    const SNT::Prediction q = SNT::predict(file, settings, std::string(), &classifier, 0.);
+    CHECK(q.classes == cgal_classes);
+  }
+  // the public forest alone, on values handed by a functor
+  const SN::Classification::Ethz_forest public_forest(bytes.str(), 2, settings.feature_names.size());
+  CHECK(public_forest.number_of_labels() == 2);
+  CHECK(public_forest.number_of_features() == 14);
+  for(const unsigned int threads : {1u, 3u})
+  {
+    std::vector<int> classes;
+    std::vector<std::vector<float>> confidence;
+    public_forest.classify<CGAL::Parallel_if_available_tag>(
+      points.size(), [&](std::size_t i, std::size_t f) { return file.columns[f].values[i]; }, classes, confidence,
+      SN::parameters::number_of_threads(threads));
+    CHECK(classes == cgal_classes);
+    CHECK(confidence == cgal_confidence);
+  }
+  std::stringstream rewritten;
+  public_forest.save_configuration(rewritten);
+  CHECK(rewritten.str() == bytes.str());
+  // a damaged or forged forest: a message, no crash (CGAL's reader would allocate without bound, or
+  // the forest read past the sample)
+  auto refusal = [&](const std::string& forest) {
+    try
+    {
+      SN::Classification::Ethz_forest damaged(forest, settings.labels.names.size(), 14);
+    }
+    catch(const std::invalid_argument& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string forest = bytes.str();
+  CHECK(refusal(forest.substr(0, 40)) == "it ends in tree 1 of 10");
+  CHECK(refusal(forest.substr(0, 20)) == "it ends in its parameters");
+  CHECK(refusal(forest + "x") == "1 bytes follow its last tree");
+  std::string forged = forest;
+  REQUIRE(forged[36] == 0); // the first tree's root splits
+  const std::int32_t far = 9999;
+  std::memcpy(&forged[36 + 9], &far, 4);
+  CHECK(refusal(forged) == "tree 1 splits on feature 9999 of 14");
+  CHECK(refusal(forest) == "accepted");
+  // the tool says which file
+  try
+  {
+    SNT::predict(file, settings, forest.substr(0, 40), nullptr, 0.);
+    FAIL("a truncated forest was read");
+  }
+  catch(const sigmoid_tool::Usage_error& e)
+  {
+    CHECK(std::string(e.what()) == "scene: not a usable classifier model: its forest cannot be read "
+                                   "(it ends in tree 1 of 10)");
+  }
+  settings.labels.names.push_back("car");
+  CHECK(refusal(forest) == "it votes for 2 classes, the model names 3");
 }
 
 TEST_CASE("the groups cgal, cgal-metric and cgal-grid: CGAL's generator bit for bit, on any thread count",

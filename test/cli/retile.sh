@@ -20,7 +20,7 @@ points=$("$python" -c "import struct,sys; d=open(sys.argv[1],'rb').read(375); pr
 
 # 10 m tiles: the records, the headers, the names and their order
 "$tool" catalog retile "$input" --size 10 -o "$dir/t10" 2> "$dir/retile.txt" || fail "retile: $(cat "$dir/retile.txt")"
-grep -q "^$dir/t10: $points points of .* in [0-9]* tiles of side 10, [0-9.]* s$" "$dir/retile.txt" \
+grep -q "^$dir/t10: $points points of .* in [0-9]* tiles of side 10, [0-9.]* s (reading [0-9.]* s.*, writing [0-9.]* s)$" "$dir/retile.txt" \
   || fail "summary: $(cat "$dir/retile.txt")"
 "$python" "$checker" retile "$input" "$dir/t10" 10 0 0 > "$dir/check.txt" || fail "$(cat "$dir/check.txt")"
 tiles=$(tiles_in "$dir/t10")

@@ -107,6 +107,7 @@ int run_classify_predict(int argc, char** argv)
   times.end("features");
   const Prediction p = predict(file, settings, forest_bytes, nullptr, graphcut);
   times.end("forest");
+  times.move("forest", "forest loading", p.seconds_loading);
   write_prediction_ply(output, file, p, settings.labels, in.first, in.last);
   times.end("writing");
   write_tile_description(output, "classify predict", args, in, times, model);

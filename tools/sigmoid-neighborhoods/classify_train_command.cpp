@@ -10,6 +10,7 @@
 #include "classification/label_mapping.h"
 #include "command_line.h"
 #include "model_input.h"
+#include "phase_times.h"
 
 #include <cmath>
 #include <cstddef>
@@ -49,24 +50,26 @@ int run_classify_train(int argc, char** argv)
   t.settings.max_per_class = args.get_unsigned("--max-per-class", 0);
   if(t.settings.trees < 1 || t.settings.depth < 1)
     throw Usage_error("--trees and --depth must be at least 1");
+  Phase_times times;
   std::vector<Featured_file> files;
   for(const std::string& path : args.positional())
+  {
     files.push_back(read_and_feature(path, t.settings.labels, true, t.settings.normals, t.settings.features));
+    times.end_reading(files.back().model);
+    times.move("reading", "features", files.back().seconds_features);
+  }
   train(files, t);
+  times.end("training");
   write_classifier_model(output, t.settings, *t.forest);
+  times.end("writing");
   end_progress();
   std::size_t points = 0;
-  double feature_seconds = 0.;
   for(const Featured_file& f : files)
-  {
     points += f.model.points.size();
-    feature_seconds += f.seconds_features;
-  }
   std::cerr << output << ": " << t.settings.feature_names.size() << " features, " << t.settings.labels.names.size()
             << " classes, " << points << " points from " << files.size() << " file(s)"
             << (t.training_points != points ? " (" + std::to_string(t.training_points) + " trained on)" : std::string())
-            << "; features "
-            << number_fixed(feature_seconds, 1) << " s, training " << number_fixed(t.seconds, 1) << " s\n";
+            << "; " << number_fixed(times.total(), 2) << " s (" << times.text() << ")\n";
   return EXIT_OK;
 }
 

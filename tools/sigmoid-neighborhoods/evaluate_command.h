@@ -11,6 +11,7 @@
 #include "command_line.h"
 #include "evaluation_files.h"
 #include "optimal_command.h"
+#include "phase_times.h"
 
 #include <CGAL/Sigmoid_neighborhoods/Point_evaluation.h>
 #include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>
@@ -341,8 +342,10 @@ inline int run_evaluate(int argc, char** argv)
   std::vector<Small_model> too_small;
   std::vector<std::string> skipped_without_normals;
   std::size_t evaluated = 0, resumed = 0, points = 0, estimated_models = 0, estimated_points = 0, normal_trees = 0;
+  Phase_times times;
   for(const Model_file& file : models)
   {
+    times.end("reading"); // what a skipped or failed model took
     const fs::path json_path = fs::path(outdir) / "models" / (file.name + ".json");
     if(args.has("--resume") && fs::exists(json_path))
     {
@@ -362,7 +365,9 @@ inline int run_evaluate(int argc, char** argv)
           SN::read_tile_with_halo(*catalog, catalog->index_of(file.name), options.k_max, o);
         if(tile.points.points.size() < std::size_t(options.k_max) + 1)
           throw Too_small_for_the_grid("too few points", std::size_t(options.k_max) + 1, tile.points.points.size());
+        times.end_reading(tile.points);
         evaluations = evaluate_model(tile.points, options, settings);
+        times.end("search");
         model = own_points(tile, evaluations);
       }
       else
@@ -374,7 +379,9 @@ inline int run_evaluate(int argc, char** argv)
           progress.done(file.name, 0, file.bytes, "skipped: no normals in the file");
           continue;
         }
+        times.end_reading(model);
         evaluations = evaluate_model(model, options, settings);
+        times.end("search");
       }
       const Model_result result = model_result(file, model, evaluations, settings);
       fs::create_directories(json_path.parent_path());
@@ -383,6 +390,7 @@ inline int run_evaluate(int argc, char** argv)
                               [&](std::ofstream& out) { write_evaluation_csv(out, model, evaluations, options.threads); });
       // The model file last: its presence means the model is complete (--resume relies on it).
       write_file_atomically(json_path.string(), [&](std::ofstream& out) { write_model_json(out, result, settings); });
+      times.end("writing");
       ++evaluated;
       points += result.points;
       if(model.normals_estimated)
@@ -431,6 +439,7 @@ inline int run_evaluate(int argc, char** argv)
   run["date"] = iso_date();
   run["host"] = host_name();
   run["seconds"] = timer.time();
+  run["phases"] = times.json();
   run["threads"] = unsigned(options.threads);
   run["shard"] = std::to_string(shard_index) + "/" + std::to_string(shard_count);
   run["models_in_shard"] = models.size();
@@ -450,7 +459,7 @@ inline int run_evaluate(int argc, char** argv)
   write_file_atomically((fs::path(dir) / "run.json").string(), [&](std::ofstream& out) { write_json(out, run); });
   std::cerr << outdir << ": " << evaluated << " models evaluated, " << resumed << " resumed, " << too_small.size()
             << " too small for the grid, " << failures.size() << " failed, " << skipped_without_normals.size() << " skipped, " << points << " points, "
-            << Progress::duration(timer.time()) << '\n';
+            << Progress::duration(timer.time()) << " (" << times.text() << ")\n";
   return EXIT_OK;
 }
 

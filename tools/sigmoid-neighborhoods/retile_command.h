@@ -13,6 +13,7 @@
 
 #include "command_line.h"
 #include "las_writer.h"
+#include "phase_times.h"
 
 #include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 
@@ -369,7 +370,7 @@ inline void check_retile_folder(const std::string& folder)
 
 inline int run_retile(int argc, char** argv, const char* usage)
 {
-  const auto start = std::chrono::steady_clock::now();
+  Phase_times times;
   double origin_x = 0., origin_y = 0.;
   std::vector<char*> rest = take_origin(argc, argv, origin_x, origin_y);
   const Arguments args(int(rest.size()), rest.data(), FIRST_COMMAND_ARGUMENT + 1,
@@ -423,13 +424,17 @@ inline int run_retile(int argc, char** argv, const char* usage)
   const std::size_t chunk_points = (std::max)(std::size_t(1), RETILE_READ_BYTES / layout.record_length);
   std::vector<unsigned char> chunk;
   in.seekg(std::streamoff(layout.point_data_start));
+  times.end("reading");
+  double reading_seconds = 0.;
   for(std::uint64_t first = 0; first < layout.point_count;)
   {
     const std::size_t count = std::size_t((std::min)(std::uint64_t(chunk_points), layout.point_count - first));
     chunk.resize(count * layout.record_length);
+    const auto read_start = std::chrono::steady_clock::now();
     if(!in.read(reinterpret_cast<char*>(chunk.data()), std::streamsize(chunk.size())))
       throw Usage_error(input + ": cannot parse the file as las (the file ends in point " +
                         std::to_string(first + std::uint64_t(in.gcount()) / layout.record_length) + ")");
+    reading_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - read_start).count();
     for(std::size_t k = 0; k < count; ++k)
     {
       const unsigned char* record = chunk.data() + k * layout.record_length;
@@ -448,19 +453,21 @@ inline int run_retile(int argc, char** argv, const char* usage)
     }
     first += count;
   }
+  // the records sorted into their tiles' buffers, full buffers written as they fill
+  times.end("tiling");
+  times.move("tiling", "reading", reading_seconds);
   tiles.finish(in);
   std::string note;
   tiles.commit(note);
-
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  times.end("writing");
   char timing[32];
-  std::snprintf(timing, sizeof(timing), "%.1f s", seconds);
+  std::snprintf(timing, sizeof(timing), "%.1f s", times.total());
   std::cerr << folder << ": " << layout.point_count << " points of " << input << " in " << tiles.size()
             << (tiles.size() == 1 ? " tile" : " tiles") << " of side " << number17(size)
             << (layout.trailer_bytes() != 0
                   ? ", its EVLRs and waveform data (" + std::to_string(layout.trailer_bytes()) + " bytes) in every tile"
                   : std::string())
-            << note << ", " << timing << '\n';
+            << note << ", " << timing << " (" << times.text() << ")\n";
   return EXIT_OK;
 }
 

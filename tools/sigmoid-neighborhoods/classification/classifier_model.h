@@ -11,6 +11,7 @@
 #include "feature_options.h"
 #include "label_mapping.h"
 
+#include <CGAL/Sigmoid_neighborhoods/Classification/Ethz_forest.h>
 #include <CGAL/Sigmoid_neighborhoods/Classification/Feature_values.h>
 
 #include <CGAL/Classification/ETHZ/Random_forest_classifier.h>
@@ -18,6 +19,7 @@
 #include <CGAL/Classification/Label_set.h>
 
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -55,14 +57,14 @@ inline void write_classifier_model(const std::string& path, const Classifier_set
   }, true);
 }
 
-// Loads the forest of `forest_bytes` for `labels` and `features`; a damaged forest is a Usage_error.
-inline void load_forest(const std::string& path, const std::string& forest_bytes,
-                        CGAL::Classification::ETHZ::Random_forest_classifier& forest)
+// The forest of `forest_bytes` for `classes` classes and `features` features; a damaged forest is a
+// Usage_error.
+inline SN::Classification::Ethz_forest load_forest(const std::string& path, const std::string& forest_bytes,
+                                                   std::size_t classes, std::size_t features)
 {
-  std::istringstream in(forest_bytes);
   try
   {
-    forest.load_configuration(in);
+    return SN::Classification::Ethz_forest(forest_bytes, classes, features);
   }
   catch(const std::exception& e)
   {

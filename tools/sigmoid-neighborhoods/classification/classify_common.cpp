@@ -30,6 +30,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -207,31 +208,38 @@ Prediction predict(const Featured_file& file, const Classifier_settings& setting
 {
   CGAL::Real_timer timer;
   timer.start();
-  CGAL::Classification::Label_set labels = label_set(settings.labels);
-  CGAL::Classification::Feature_set features;
-  fill_feature_set(file.columns, settings.feature_names, features);
-  Forest forest(labels, features);
+  const std::size_t n = file.model.points.size(), classes = settings.labels.names.size();
+  std::optional<SN::Classification::Ethz_forest> trees;
   if(trained != nullptr)
   {
     std::stringstream bytes;
     trained->save_configuration(bytes);
-    forest.load_configuration(bytes);
+    trees.emplace(load_forest(file.path, bytes.str(), classes, settings.feature_names.size()));
   }
   else
-    load_forest(file.path, forest_bytes, forest);
-  const std::size_t n = file.model.points.size();
+    trees.emplace(load_forest(file.path, forest_bytes, classes, settings.feature_names.size()));
+  const double seconds_loading = timer.time();
   Prediction p;
-  p.confidence.assign(labels.size(), std::vector<float>(n, 0.f));
+  p.confidence.assign(classes, std::vector<float>(n, 0.f));
   p.classes.assign(n, -1);
-#ifdef CGAL_LINKED_WITH_TBB
-  // --threads bounds CGAL's loops over the points (each point's result depends on it alone)
-  std::unique_ptr<tbb::global_control> limit;
-  if(settings.features.threads != 0)
-    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                  settings.features.threads);
-#endif
   if(graphcut > 0.)
   {
+    CGAL::Classification::Label_set labels = label_set(settings.labels);
+    CGAL::Classification::Feature_set features;
+    fill_feature_set(file.columns, settings.feature_names, features);
+    Forest forest(labels, features);
+    {
+      std::stringstream bytes;
+      trees->save_configuration(bytes);
+      forest.load_configuration(bytes);
+    }
+#ifdef CGAL_LINKED_WITH_TBB
+    // --threads bounds CGAL's loops over the points
+    std::unique_ptr<tbb::global_control> limit;
+    if(settings.features.threads != 0)
+      limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                    settings.features.threads);
+#endif
     std::vector<float> probabilities(labels.size());
     for(std::size_t i = 0; i < n; ++i)
     {
@@ -246,10 +254,24 @@ Prediction predict(const Featured_file& file, const Classifier_settings& setting
     CGAL::Classification::classify_with_graphcut<CGAL::Parallel_if_available_tag>(
       file.model.points, Point_map(), labels, forest, neighborhood.k_neighbor_query(12), float(graphcut), 1, p.classes);
   }
-  else // the forest evaluated once per point: the confidences and the most confident class
-    CGAL::Classification::classify<CGAL::Parallel_if_available_tag>(file.model.points, labels, forest, p.classes,
-                                                                     p.confidence);
+  else
+  {
+    // CGAL's classify() with the confidences, on the package's own loop (see Ethz_forest)
+    std::vector<const std::vector<double>*> ordered;
+    for(const std::string& name : settings.feature_names)
+    {
+      const auto it = std::find_if(file.columns.begin(), file.columns.end(),
+                                   [&](const Feature_column& c) { return c.name == name; });
+      if(it == file.columns.end())
+        throw Usage_error("the model reads a feature '" + name + "' that its feature groups do not give");
+      ordered.push_back(&it->values);
+    }
+    trees->classify<CGAL::Parallel_if_available_tag>(
+      n, [&](std::size_t i, std::size_t f) { return (*ordered[f])[i]; }, p.classes, p.confidence,
+      SN::parameters::number_of_threads(settings.features.threads));
+  }
   p.seconds = timer.time();
+  p.seconds_loading = seconds_loading;
   return p;
 }
 

@@ -88,6 +88,7 @@ struct Prediction
   std::vector<int> classes;
   std::vector<std::vector<float>> confidence; // per class, per point
   double seconds = 0.;
+  double seconds_loading = 0.; // of `seconds`: the forest read from its bytes
 };
 
 Prediction predict(const Featured_file& file, const Classifier_settings& settings, const std::string& forest_bytes,

@@ -27,22 +27,42 @@
 #include <string>
 #include <vector>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace sigmoid_tool {
 
 namespace internal_classification {
 
+// The columns of the features `which` of the records `record(i)` of the points i < n, named with
+// `suffix`; allocated first, then filled on `threads` threads (a value depends on its point alone).
+template <typename Record>
+void append_point_features(std::size_t n, const Record& record, const std::vector<SN::Point_feature>& which,
+                           const std::string& suffix, unsigned int threads, std::vector<Feature_column>& columns)
+{
+  const std::size_t first = columns.size();
+  for(SN::Point_feature f : which)
+    columns.push_back({SN::point_feature_name(f) + suffix, std::vector<double>(n)});
+  const std::ptrdiff_t count = std::ptrdiff_t(n);
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(threads == 0 ? omp_get_max_threads() : int(threads))
+#endif
+  for(std::ptrdiff_t i = 0; i < count; ++i)
+  {
+    const SN::Point_features& p = record(std::size_t(i));
+    for(std::size_t k = 0; k < which.size(); ++k)
+      columns[first + k].values[std::size_t(i)] = p.value(which[k]);
+  }
+  (void)threads;
+}
+
 inline void append_point_features(const std::vector<SN::Point_features>& features,
                                   const std::vector<SN::Point_feature>& which, const std::string& suffix,
-                                  std::vector<Feature_column>& columns)
+                                  unsigned int threads, std::vector<Feature_column>& columns)
 {
-  for(SN::Point_feature f : which)
-  {
-    Feature_column c{SN::point_feature_name(f) + suffix, {}};
-    c.values.reserve(features.size());
-    for(const SN::Point_features& p : features)
-      c.values.push_back(p.value(f));
-    columns.push_back(std::move(c));
-  }
+  append_point_features(features.size(), [&](std::size_t i) -> const SN::Point_features& { return features[i]; },
+                        which, suffix, threads, columns);
 }
 
 inline void append_height_features(const SN::Oriented_point_set& model, double cell, const std::string& suffix,
@@ -197,13 +217,9 @@ std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set
       SN::compute_point_features<SN::Parallel_if_available_tag>(range, weights, sizes, std::back_inserter(per_point),
                                                                 rows);
       for(std::size_t s = 0; s < sizes.size(); ++s)
-      {
-        std::vector<SN::Point_features> at_size;
-        at_size.reserve(per_point.size());
-        for(const auto& p : per_point)
-          at_size.push_back(p[s]);
-        append_point_features(at_size, shape, (sigmoid ? "_sigmoid_k" : "_k") + std::to_string(sizes[s]), columns);
-      }
+        append_point_features(
+          per_point.size(), [&](std::size_t i) -> const SN::Point_features& { return per_point[i][s]; }, shape,
+          (sigmoid ? "_sigmoid_k" : "_k") + std::to_string(sizes[s]), o.threads, columns);
     }
     else if(group == "eigenentropy" || group == "dimensionality" || group == "optimal")
     {
@@ -216,7 +232,7 @@ std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set
       SN::compute_optimal_point_features<SN::Parallel_if_available_tag>(
         range, std::back_inserter(features),
         SNP::criterion(criterion, SNP::k_min(o.k_min, SNP::k_max(o.k_max, SNP::a_grid(grid, SNP::b_grid(grid, rows))))));
-      append_point_features(features, equal ? with_size : with_triple, "_" + group, columns);
+      append_point_features(features, equal ? with_size : with_triple, "_" + group, o.threads, columns);
     }
     else if(group == "height")
     {
@@ -252,21 +268,23 @@ std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set
         SN::compute_pyramid_features<SN::Parallel_if_available_tag>(range, levels, o.pyramid_k, weights,
                                                                     std::back_inserter(records),
                                                                     SNP::number_of_threads(o.threads, maps));
-        for(std::size_t i = 0; i < records.size(); ++i)
-          per_point[i].insert(per_point[i].end(), records[i].begin(), records[i].end());
+        const std::ptrdiff_t count = std::ptrdiff_t(records.size());
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(o.threads == 0 ? omp_get_max_threads() : int(o.threads))
+#endif
+        for(std::ptrdiff_t i = 0; i < count; ++i)
+          per_point[std::size_t(i)].insert(per_point[std::size_t(i)].end(), records[std::size_t(i)].begin(),
+                                           records[std::size_t(i)].end());
       }
       // per_point holds the weighted levels, then the equal ones: the columns in that order
       std::vector<std::size_t> order = weighted;
       order.insert(order.end(), equal.begin(), equal.end());
       for(std::size_t c = 0; c < order.size(); ++c)
       {
-        std::vector<SN::Point_features> at_level;
-        at_level.reserve(per_point.size());
-        for(const auto& p : per_point)
-          at_level.push_back(p[c]);
         const std::string weights_name = c < weighted.size() ? "_sigmoid" : "";
-        append_point_features(at_level, shape, weights_name + internal_classification::pyramid_suffix(cells[order[c]]),
-                              columns);
+        append_point_features(
+          per_point.size(), [&](std::size_t i) -> const SN::Point_features& { return per_point[i][c]; }, shape,
+          weights_name + internal_classification::pyramid_suffix(cells[order[c]]), o.threads, columns);
       }
       // the heights in the levels' cells, once when both groups are given
       if(!sigmoid || !has_group(o, "pyramid"))

@@ -178,7 +178,13 @@ inline double anchored_cgal_grid_reach(float voxel_size, unsigned int scales)
   voxel scale its 12th nearest representative plus a voxel's diagonal in x and y (a voxel meeting
   that ball must be whole). A tile read with a halo that holds every point within that distance of
   each of its points gets the union's values; infinity where a scale has fewer than 12 candidates.
+  \param points the whole point set (the tile with its halo, or the union)
+  \param voxel_size the smallest voxel, as given to `compute_anchored_cgal_features()`
+  \param scales the number of voxel scales, as given to `compute_anchored_cgal_features()`
+  \param first the first point whose reach is wanted
+  \param last one past the last point whose reach is wanted
   \param np optional: `point_map` (CGAL) and `number_of_threads`
+  \returns `last - first` distances, in the points' units
 */
 template <typename ConcurrencyTag, typename PointRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
 std::vector<double> anchored_cgal_neighbor_reach(const PointRange& points, float voxel_size, unsigned int scales,

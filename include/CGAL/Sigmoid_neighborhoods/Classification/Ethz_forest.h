@@ -1,0 +1,201 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_CLASSIFICATION_ETHZ_FOREST_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_CLASSIFICATION_ETHZ_FOREST_H
+
+#include <CGAL/Sigmoid_neighborhoods/Classification/Feature_values.h>
+#include <CGAL/Sigmoid_neighborhoods/parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
+
+#include <CGAL/Classification/ETHZ/internal/random-forest/forest.hpp>
+#include <CGAL/Classification/ETHZ/internal/random-forest/node-gini.hpp>
+#include <CGAL/Named_function_parameters.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <istream>
+#include <memory>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+namespace Classification {
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsClassification
+  the random forest of CGAL's `CGAL::Classification::ETHZ::Random_forest_classifier`, read from
+  the bytes its `save_configuration()` writes, that classifies many items on the package's
+  deterministic parallel loop.
+
+  CGAL's classifier reads each value through a `Feature_set`, which copies a shared pointer per
+  feature and item: on more than one thread all threads then write the same reference counts, and
+  two threads ran slower than one. `classify()` gives the labels and confidences of CGAL's
+  `classify()` with that classifier (the votes clamped to [0, 1], the first most confident label),
+  bit for bit, for any number of threads.
+
+  CGAL's reader checks nothing: truncated or forged bytes make it allocate without bound, recurse
+  until the stack ends, or read a feature past the item's. The constructor checks the bytes against
+  the format of CGAL 5.5's ETHZ forest first (its parameters, a tree count, each tree's nodes depth
+  first: a leaf flag, two counts, the split's feature and threshold, one vote per label).
+*/
+class Ethz_forest
+{
+  typedef CGAL::internal::liblearning::RandomForest::RandomForest<
+    CGAL::internal::liblearning::RandomForest::NodeGini<CGAL::internal::liblearning::RandomForest::AxisAlignedSplitter>>
+    Forest;
+
+public:
+  /// what is wrong with `bytes` as a forest of `number_of_labels` labels reading `number_of_features`
+  /// features; empty if nothing
+  static std::string problem(const std::string& bytes, std::size_t number_of_labels, std::size_t number_of_features)
+  {
+    std::size_t at = 0;
+    auto take_u32 = [&](std::uint32_t& v) {
+      if(bytes.size() - at < 4)
+        return false;
+      std::memcpy(&v, bytes.data() + at, 4);
+      at += 4;
+      return true;
+    };
+    std::uint32_t params[7];
+    for(std::uint32_t& v : params)
+      if(!take_u32(v))
+        return "it ends in its parameters";
+    at += 4; // the sample reduction, a float
+    std::uint32_t trees = 0;
+    if(bytes.size() < at || !take_u32(trees))
+      return "it ends in its parameters";
+    if(params[0] != number_of_labels)
+      return "it votes for " + std::to_string(params[0]) + " classes, the model names " +
+             std::to_string(number_of_labels);
+    if(params[1] != number_of_features)
+      return "it reads " + std::to_string(params[1]) + " features, the model names " +
+             std::to_string(number_of_features);
+    if(trees == 0)
+      return "it has no tree";
+    const std::size_t node_bytes = 1 + 4 + 4 + 4 + 4 + 4 * std::size_t(number_of_labels);
+    // deeper than any forest CGAL trains (its depth is a 32-bit count, but each level halves the samples)
+    const std::size_t deepest = 1024;
+    for(std::uint32_t t = 0; t < trees; ++t)
+    {
+      std::vector<std::size_t> pending{0}; // the depths of the nodes still to read
+      while(!pending.empty())
+      {
+        const std::size_t depth = pending.back();
+        pending.pop_back();
+        if(bytes.size() - at < node_bytes)
+          return "it ends in tree " + std::to_string(t + 1) + " of " + std::to_string(trees);
+        if(depth > deepest)
+          return "tree " + std::to_string(t + 1) + " is deeper than " + std::to_string(deepest) + " levels";
+        const bool leaf = bytes[at] != 0;
+        std::int32_t feature = 0;
+        std::memcpy(&feature, bytes.data() + at + 9, 4);
+        if(!leaf && (feature < 0 || std::size_t(feature) >= number_of_features))
+          return "tree " + std::to_string(t + 1) + " splits on feature " + std::to_string(feature) + " of " +
+                 std::to_string(number_of_features);
+        at += node_bytes;
+        if(!leaf)
+        {
+          pending.push_back(depth + 1);
+          pending.push_back(depth + 1);
+        }
+      }
+    }
+    if(at != bytes.size())
+      return std::to_string(bytes.size() - at) + " bytes follow its last tree";
+    return std::string();
+  }
+
+  /// the forest of `bytes` (as `save_configuration()` writes it) for `number_of_labels` labels and
+  /// `number_of_features` features; throws `std::invalid_argument` with `problem()` if it is not one
+  Ethz_forest(const std::string& bytes, std::size_t number_of_labels, std::size_t number_of_features)
+    : m_labels(number_of_labels), m_features(number_of_features)
+  {
+    const std::string wrong = problem(bytes, number_of_labels, number_of_features);
+    if(!wrong.empty())
+      throw std::invalid_argument(wrong);
+    CGAL::internal::liblearning::RandomForest::ForestParams params;
+    m_forest = std::make_unique<Forest>(params);
+    std::istringstream in(bytes);
+    m_forest->read(in);
+  }
+
+  /// the number of labels it votes for
+  std::size_t number_of_labels() const { return m_labels; }
+  /// the number of features it reads
+  std::size_t number_of_features() const { return m_features; }
+
+  /// writes the bytes that `Random_forest_classifier::load_configuration()` reads
+  void save_configuration(std::ostream& out) const { m_forest->write(out); }
+
+  /*!
+    classifies the items `0` ... `n - 1` whose feature `f` at item `i` is `value(i, f)` (converted
+    to `float`; a non-finite value becomes `Feature_values::NON_FINITE_VALUE`, as
+    `Feature_values` stores it): `label_indices[i]` the first label of the highest vote (0 if all
+    votes are 0, as in CGAL's `classify()`), `confidence[j][i]` label `j`'s vote clamped to [0, 1].
+    \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag`
+    \param n the number of items
+    \param value `value(i, f)` is convertible to `double`; it is called on several threads at once
+    \param label_indices resized to `n`
+    \param confidence resized to `number_of_labels()` columns of `n`
+    \param np optional: `number_of_threads` (0, the default: all)
+  */
+  template <typename ConcurrencyTag, typename FeatureValue, typename CGAL_NP_TEMPLATE_PARAMETERS>
+  void classify(std::size_t n, const FeatureValue& value, std::vector<int>& label_indices,
+                std::vector<std::vector<float>>& confidence,
+                const CGAL_NP_CLASS& np = CGAL::parameters::default_values()) const
+  {
+    label_indices.assign(n, 0);
+    confidence.assign(m_labels, std::vector<float>(n, 0.f));
+    struct Scratch
+    {
+      std::vector<float> sample, votes;
+    };
+    internal::for_each_index<ConcurrencyTag>(
+      n, internal::number_of_threads(np),
+      [&] {
+        return Scratch{std::vector<float>(m_features, 0.f), std::vector<float>(m_labels, 0.f)};
+      },
+      [&](std::size_t i, Scratch& s) {
+        for(std::size_t f = 0; f < m_features; ++f)
+        {
+          const double v = double(value(i, f));
+          s.sample[f] = std::isfinite(v) ? float(v) : Feature_values::NON_FINITE_VALUE;
+        }
+        m_forest->evaluate(s.sample.data(), s.votes.data());
+        float best_value = 0.f;
+        for(std::size_t j = 0; j < m_labels; ++j)
+        {
+          const float v = (std::min)(1.f, (std::max)(0.f, s.votes[j]));
+          confidence[j][i] = v;
+          if(best_value < v)
+          {
+            best_value = v;
+            label_indices[i] = int(j);
+          }
+        }
+      },
+      256);
+  }
+
+private:
+  std::size_t m_labels, m_features;
+  std::unique_ptr<Forest> m_forest;
+};
+
+} // namespace Classification
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_CLASSIFICATION_ETHZ_FOREST_H
