@@ -23,6 +23,15 @@ sphere 40 2 > "$work/in/sub/sphere.xyz"
 : > "$work/in/broken.xyz"
 sphere 8 1 > "$work/in/tiny.xyz"
 "$tool" evaluate "$work/in" -o "$work/base" --repository hostile --threads 1 2> "$work/evaluate.log"
+# on 3 threads the next models are read ahead: the same results and failures, reported for the same models
+"$tool" evaluate "$work/in" -o "$work/base3" --repository hostile --threads 3 2> "$work/evaluate3.log"
+for file in failures.json summary.json models/sphere.xyz.json models/sub/sphere.xyz.json; do
+  cmp "$work/base/$file" "$work/base3/$file" || { echo "read ahead: $file differs"; exit 1; }
+done
+if [ "$(sed 's/ (.*//' "$work/evaluate.log" | head -n 4)" != "$(sed 's/ (.*//' "$work/evaluate3.log" | head -n 4)" ]; then
+  echo "read ahead: other progress lines"; cat "$work/evaluate.log" "$work/evaluate3.log"; exit 1
+fi
+grep -q "^\[1/4\] broken.xyz: FAILED: the file is empty" "$work/evaluate3.log" || { echo "read ahead: no failure"; exit 1; }
 "$tool" merge "$work/base" -o "$work/merged_ok" 2> /dev/null
 
 cases=0

@@ -5,6 +5,10 @@
 
 #include "command_line.h"
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace sigmoid_tool {
 
 Arguments::Arguments(int argc, char** argv, int first, const std::vector<std::string>& valued,
@@ -291,4 +295,13 @@ bool run_python_script(const std::string& name, const std::vector<std::string>& 
       return false;
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
+unsigned int resolved_threads(unsigned int requested)
+{
+#ifdef _OPENMP
+  return requested != 0 ? requested : unsigned((std::max)(1, omp_get_max_threads()));
+#else
+  return requested != 0 ? requested : 1u;
+#endif
+}
+
 } // namespace sigmoid_tool

@@ -112,6 +112,9 @@ std::pair<std::string, std::string> one_input_and_output(const Arguments& args, 
 // --threads N: the threads of every parallel call (0: OpenMP's default).
 inline unsigned int read_threads(const Arguments& args) { return args.get_unsigned("--threads", 0); }
 
+// The number of threads that `--threads requested` stands for: OpenMP's default for 0.
+unsigned int resolved_threads(unsigned int requested);
+
 // --angle-tolerance: a tolerance on angles in radians, in [0, pi).
 double read_angle_tolerance(const Arguments& args, double fallback);
 

@@ -25,6 +25,8 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <functional>
+#include <future>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -51,6 +53,64 @@ struct Model_file
   std::string name; // relative to its input root, '/'-separated
   std::string path;
   std::uintmax_t bytes = 0;
+};
+
+// Reading a mesh (CGAL's parsing, the soup's repair and orientation, the vertex normals) runs on one
+// thread: on the clean meshes of ../shared/data it was a third of a one-thread run. So the next
+// models are read on threads of their own, one thread each (the same points and normals as on
+// any number), while the current one is searched: up to `depth` models ahead, files of at most
+// READ_AHEAD_BYTES together, so that memory holds a bounded amount of small models beside the
+// searched one (a larger file is read when taken, on all threads). A model's exception reaches the
+// caller when it takes the model, as if it were read then.
+constexpr std::uintmax_t READ_AHEAD_BYTES = std::uintmax_t(128) << 20;
+
+class Read_ahead
+{
+public:
+  typedef std::function<SN::Oriented_point_set(const Model_file&, unsigned int threads)> Reader;
+
+  // `wanted(i)`: model i will be taken (not resumed); `threads`: those of a model read when taken
+  Read_ahead(const std::vector<Model_file>& models, std::size_t depth, unsigned int threads,
+             std::function<bool(std::size_t)> wanted, Reader read)
+    : m_models(models), m_depth(depth), m_threads(threads), m_wanted(std::move(wanted)), m_read(std::move(read)),
+      m_pending(models.size())
+  {
+  }
+
+  SN::Oriented_point_set take(std::size_t i)
+  {
+    for(m_next = (std::max)(m_next, i + 1); m_next < m_models.size() && m_next <= i + m_depth; ++m_next)
+    {
+      const Model_file& file = m_models[m_next];
+      if(m_bytes_ahead + file.bytes > READ_AHEAD_BYTES)
+        break; // m_next is tried again at the next model
+      if(!m_wanted(m_next))
+        continue;
+      try
+      {
+        m_pending[m_next] = std::async(std::launch::async, [this, &file] { return m_read(file, 1); });
+        m_bytes_ahead += file.bytes;
+      }
+      catch(const std::exception&)
+      {
+        // no thread to spare: the model is read when taken
+      }
+    }
+    if(!m_pending[i].valid())
+      return m_read(m_models[i], m_threads);
+    m_bytes_ahead -= m_models[i].bytes;
+    return m_pending[i].get();
+  }
+
+private:
+  const std::vector<Model_file>& m_models;
+  std::size_t m_depth;
+  unsigned int m_threads;
+  std::function<bool(std::size_t)> m_wanted;
+  Reader m_read;
+  std::vector<std::future<SN::Oriented_point_set>> m_pending;
+  std::size_t m_next = 0;
+  std::uintmax_t m_bytes_ahead = 0; // of the models read ahead and not yet taken
 };
 
 inline bool is_model_extension(const fs::path& p)
@@ -107,7 +167,8 @@ inline std::vector<Model_file> shard(const std::vector<Model_file>& models, unsi
   return mine;
 }
 
-// Models done of total, points per second and time left; a bar on a terminal, lines elsewhere.
+// Models done of total, points per second and time left; a bar on a terminal, lines elsewhere. On
+// std::clog: a file read ahead holds std::cerr while CGAL's reader speaks (Read_ahead).
 class Progress
 {
 public:
@@ -133,15 +194,15 @@ public:
       std::snprintf(line, sizeof(line), "\r[%-*s] %zu/%zu models, %.0f points/s, %s left   ",
                     width, std::string(std::size_t(filled), '#').c_str(), m_done, m_total, rate,
                     duration(left).c_str());
-      std::cerr << line << std::flush;
+      std::clog << line << std::flush;
       if(m_done == m_total)
-        std::cerr << '\n';
+        std::clog << '\n';
     }
     else
     {
       std::snprintf(line, sizeof(line), "[%zu/%zu] %s: %s (%.0f points/s, %s left)\n", m_done, m_total,
                     name.c_str(), outcome.c_str(), rate, duration(left).c_str());
-      std::cerr << line << std::flush;
+      std::clog << line << std::flush;
     }
   }
 
@@ -343,11 +404,24 @@ inline int run_evaluate(int argc, char** argv)
   std::vector<std::string> skipped_without_normals;
   std::size_t evaluated = 0, resumed = 0, points = 0, estimated_models = 0, estimated_points = 0, normal_trees = 0;
   Phase_times times;
-  for(const Model_file& file : models)
+  auto resumed_model = [&](const Model_file& file) {
+    return args.has("--resume") && fs::exists(fs::path(outdir) / "models" / (file.name + ".json"));
+  };
+  // with --threads 1, one thread; a catalog's tiles are read with their halos, on all threads
+  const unsigned int threads = resolved_threads(options.threads);
+  Read_ahead ahead(models, catalog || threads == 1 ? 0 : threads, options.threads,
+                   [&](std::size_t i) { return !resumed_model(models[i]); },
+                   [&](const Model_file& file, unsigned int reader_threads) {
+                     SN::Normal_options o = normal_options;
+                     o.threads = reader_threads;
+                     return read_model(file.path, options.k_max, o, !args.has("--only-with-normals"));
+                   });
+  for(std::size_t index = 0; index < models.size(); ++index)
   {
+    const Model_file& file = models[index];
     times.end("reading"); // what a skipped or failed model took
     const fs::path json_path = fs::path(outdir) / "models" / (file.name + ".json");
-    if(args.has("--resume") && fs::exists(json_path))
+    if(resumed_model(file))
     {
       ++resumed;
       progress.done(file.name, 0, file.bytes, "already done");
@@ -372,7 +446,7 @@ inline int run_evaluate(int argc, char** argv)
       }
       else
       {
-        model = read_model(file.path, options.k_max, normal_options, !args.has("--only-with-normals"));
+        model = ahead.take(index);
         if(model.normals.empty())
         {
           skipped_without_normals.push_back(file.name);

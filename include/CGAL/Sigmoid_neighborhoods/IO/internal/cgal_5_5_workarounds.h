@@ -15,6 +15,7 @@
 
 #include <fstream>
 #include <iostream>
+#include <mutex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -27,10 +28,18 @@ namespace Sigmoid_neighborhoods {
 namespace internal {
 
 // CGAL's readers explain a failure on std::cerr; keep the explanation for our one-line message.
+// std::cerr is one for the process: files read on several threads at once take turns here (the
+// parsing; what follows it, the repair and the normals, runs side by side).
 class Captured_cerr
 {
+  static std::mutex& turn()
+  {
+    static std::mutex m;
+    return m;
+  }
+
 public:
-  Captured_cerr() : m_old(std::cerr.rdbuf(m_buffer.rdbuf())) {}
+  Captured_cerr() : m_turn(turn()), m_old(std::cerr.rdbuf(m_buffer.rdbuf())) {}
   ~Captured_cerr() { std::cerr.rdbuf(m_old); }
   Captured_cerr(const Captured_cerr&) = delete;
   Captured_cerr& operator=(const Captured_cerr&) = delete;
@@ -48,6 +57,7 @@ public:
   }
 
 private:
+  std::lock_guard<std::mutex> m_turn;
   std::ostringstream m_buffer;
   std::streambuf* m_old;
 };
