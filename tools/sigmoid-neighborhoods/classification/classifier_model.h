@@ -36,16 +36,27 @@ inline CGAL::Classification::Label_set label_set(const Label_mapping& m)
 }
 
 // The columns as a CGAL feature set, in the order of `names` (each must be one of the columns).
-inline void fill_feature_set(const std::vector<Feature_column>& columns, const std::vector<std::string>& names,
-                             CGAL::Classification::Feature_set& set)
+// The values of the features `names`, in that order, among `columns`.
+inline std::vector<const std::vector<double>*> ordered_columns(const std::vector<Feature_column>& columns,
+                                                             const std::vector<std::string>& names)
 {
+  std::vector<const std::vector<double>*> ordered;
   for(const std::string& name : names)
   {
     const auto it = std::find_if(columns.begin(), columns.end(), [&](const Feature_column& c) { return c.name == name; });
     if(it == columns.end())
       throw Usage_error("the model reads a feature '" + name + "' that its feature groups do not give");
-    set.add<SN::Classification::Feature_values>(it->values, name);
+    ordered.push_back(&it->values);
   }
+  return ordered;
+}
+
+inline void fill_feature_set(const std::vector<Feature_column>& columns, const std::vector<std::string>& names,
+                             CGAL::Classification::Feature_set& set)
+{
+  const std::vector<const std::vector<double>*> ordered = ordered_columns(columns, names);
+  for(std::size_t f = 0; f < names.size(); ++f)
+    set.add<SN::Classification::Feature_values>(*ordered[f], names[f]);
 }
 
 inline void write_classifier_model(const std::string& path, const Classifier_settings& s,

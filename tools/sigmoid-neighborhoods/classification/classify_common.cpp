@@ -257,15 +257,7 @@ Prediction predict(const Featured_file& file, const Classifier_settings& setting
   else
   {
     // CGAL's classify() with the confidences, on the package's own loop (see Ethz_forest)
-    std::vector<const std::vector<double>*> ordered;
-    for(const std::string& name : settings.feature_names)
-    {
-      const auto it = std::find_if(file.columns.begin(), file.columns.end(),
-                                   [&](const Feature_column& c) { return c.name == name; });
-      if(it == file.columns.end())
-        throw Usage_error("the model reads a feature '" + name + "' that its feature groups do not give");
-      ordered.push_back(&it->values);
-    }
+    const std::vector<const std::vector<double>*> ordered = ordered_columns(file.columns, settings.feature_names);
     trees->classify<CGAL::Parallel_if_available_tag>(
       n, [&](std::size_t i, std::size_t f) { return (*ordered[f])[i]; }, p.classes, p.confidence,
       SN::parameters::number_of_threads(settings.features.threads));
