@@ -20,6 +20,10 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
 #include <map>
 #include <random>
 #include <utility>
@@ -290,4 +294,145 @@ TEST_CASE("classifier model: the pyramid's cell sizes and k round trip; old mode
   bad = j;
   bad["features"]["pyramid"]["cell_sizes"] = {0.25, 0.5, 2.};
   CHECK_THROWS_AS(settings_from_json(bad, "bad.bin"), Usage_error);
+}
+
+TEST_CASE("feature groups: one table gives the names, the help, the needs and the checks", "[classification]")
+{
+  using namespace sigmoid_tool;
+  const std::vector<Feature_group>& table = feature_groups();
+  REQUIRE(table.size() == 12);
+  const std::string usage = feature_groups_usage();
+  for(const Feature_group& g : table)
+  {
+    CHECK(find_feature_group(g.name) == &g);
+    CHECK(usage.find("      " + std::string(g.name) + " ") != std::string::npos);
+    CHECK((g.help != nullptr && g.neighbors != nullptr && g.halo != nullptr && g.on_tiles != nullptr &&
+           g.compute != nullptr));
+  }
+  CHECK(find_feature_group("colour") == nullptr);
+
+  auto refusal = [](const std::function<void()>& f) {
+    try
+    {
+      f();
+    }
+    catch(const Usage_error& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("no refusal");
+  };
+  CHECK(refusal([] { parse_feature_groups("k20,colour"); }) ==
+        "--features: unknown group 'colour': expected cgal, cgal-metric, cgal-grid, k20, eigenentropy, dimensionality, "
+        "optimal, multiscale, multiscale-sigmoid, height, pyramid or pyramid-sigmoid");
+  CHECK(refusal([] { parse_feature_groups("k20,height,k20"); }) == "--features: group 'k20' given twice");
+  CHECK(refusal([] { parse_feature_groups("cgal-grid,k20,cgal"); }) ==
+        "--features: cgal, cgal-metric and cgal-grid share CGAL's features: give one of them");
+  CHECK(refusal([] { parse_feature_groups(""); }) == "--features: no group");
+  CHECK(parse_feature_groups(DEFAULT_FEATURE_GROUPS) ==
+        std::vector<std::string>{"cgal-metric", "multiscale-sigmoid", "pyramid"});
+
+  // what a set needs: the largest of its groups'
+  Feature_options o;
+  o.groups = {"k20", "multiscale", "height"};
+  CHECK(largest_neighborhood(o) == 100);
+  CHECK(cell_halo(o) == 10. * (1. + 1e-6));
+  o.groups = {"optimal", "cgal"};
+  CHECK(largest_neighborhood(o) == o.k_max);
+  CHECK(cell_halo(o) == 0.);
+  CHECK(whole_set_groups(o) == "cgal");
+  o.groups = {"pyramid", "pyramid-sigmoid"}; // cells 0.5 ... 8 m
+  CHECK(largest_neighborhood(o) == 0);
+  CHECK(cell_halo(o) == 32.);
+  CHECK(cell_halo(o, false) == 8. * (1. + 1e-6));
+  CHECK(whole_set_groups(o) == "");
+  o.groups = {"height", "cgal-metric"};
+  CHECK(cell_halo(o) > 10.);
+  CHECK(whole_set_groups(o) == "");
+  o.cgal_grids_at_origin = false; // an older model's grids, anchored at the bounding box
+  CHECK(cell_halo(o) == 10. * (1. + 1e-6));
+  CHECK(whole_set_groups(o) == "cgal-metric");
+}
+
+TEST_CASE("feature options: the command line and a model file refused by the same rules", "[classification]")
+{
+  using namespace sigmoid_tool;
+  Classifier_settings s;
+  s.labels = parse_label_mapping("ground=2,building=6");
+  s.features.groups = {"pyramid-sigmoid", "multiscale"};
+  s.feature_names = {"linearity_pyr0.5"};
+  const nlohmann::json written = nlohmann::json::parse(settings_json(s).dump());
+  REQUIRE_NOTHROW(settings_from_json(written, "model.bin"));
+  REQUIRE_NOTHROW(s.features.check(Feature_options::COMMAND_LINE));
+
+  auto message = [](const std::function<void()>& f) {
+    try
+    {
+      f();
+    }
+    catch(const Usage_error& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  // one bad setting at a time: its option's message on the command line, its key's in the model file
+  struct Case
+  {
+    std::function<void(Feature_options&)> set;
+    std::function<void(nlohmann::json&)> write;
+    std::string command_line, model_file;
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<Case> cases{
+    {[](Feature_options& f) { f.pyramid_levels = 33; }, [](nlohmann::json& j) { j["pyramid"]["levels"] = 33; },
+     "--pyramid-levels must be 1 to 32", "features.pyramid.levels must be 1 to 32"},
+    {[](Feature_options& f) { f.cgal_scales = 0; }, [](nlohmann::json& j) { j["cgal_scales"] = 0; },
+     "--cgal-scales must be 1 to 32", "features.cgal_scales must be 1 to 32"},
+    {[&](Feature_options& f) { f.cgal_voxel = nan; }, [](nlohmann::json& j) { j["cgal_voxel"] = nullptr; },
+     "--cgal-voxel must be a positive voxel size in metres", "features.cgal_voxel must be a positive voxel size in metres"},
+    {[](Feature_options& f) { f.scales = {50, 10}; }, [](nlohmann::json& j) { j["scales"] = {50, 10}; },
+     "--scales must be ascending neighbor counts of 1 to 10000 (the columns are named by k)",
+     "features.scales must be ascending neighbor counts of 1 to 10000 (the columns are named by k)"},
+    {[](Feature_options& f) { f.sigmoid_a = 1.; f.sigmoid_b = 0.5; }, [](nlohmann::json& j) { j["sigmoid"] = {1., 0.5}; },
+     "--sigmoid must be two angles 0 <= a <= b <= pi", "features.sigmoid must be two angles 0 <= a <= b <= pi"},
+    {[](Feature_options& f) { f.pyramid_sigmoid_cells = {3.}; }, [](nlohmann::json& j) { j["pyramid"]["sigmoid_cells"] = {3.}; },
+     "--pyramid-sigmoid-cells: 3 is not a cell size of the pyramid (--pyramid-cell x 2^l)",
+     "features.pyramid.sigmoid_cells: 3 is not a cell size of the pyramid (features.pyramid.cell x 2^l)"},
+    {[](Feature_options& f) { f.groups = {"cgal", "cgal-grid"}; }, [](nlohmann::json& j) { j["groups"] = {"cgal", "cgal-grid"}; },
+     "--features: cgal, cgal-metric and cgal-grid share CGAL's features: give one of them",
+     "features.groups: cgal, cgal-metric and cgal-grid share CGAL's features: give one of them"},
+    {[](Feature_options& f) { f.pyramid_k = 0; }, [](nlohmann::json& j) { j["pyramid"]["k"] = 0; },
+     "features.pyramid.k must be 1 to 10000", "features.pyramid.k must be 1 to 10000"}};
+  for(const Case& c : cases)
+  {
+    Feature_options o = s.features;
+    c.set(o);
+    CHECK(message([&] { o.check(Feature_options::COMMAND_LINE); }) == c.command_line);
+    nlohmann::json j = written;
+    c.write(j["features"]);
+    j = nlohmann::json::parse(j.dump()); // as a file reads: counts unsigned
+    CHECK(message([&] { settings_from_json(j, "model.bin"); }) ==
+          "model.bin: not a usable classifier model: " + c.model_file);
+  }
+  // the types, by the tool's JSON reader
+  nlohmann::json j = written;
+  j["features"]["k_max"] = "twenty";
+  CHECK(message([&] { settings_from_json(j, "model.bin"); }) ==
+        "model.bin: not a usable classifier model: features.k_max is a string, expected an integer");
+  j = written;
+  j["features"]["fixed_k"] = -3;
+  CHECK(message([&] { settings_from_json(j, "model.bin"); }) ==
+        "model.bin: not a usable classifier model: features.fixed_k is -3, expected a count (an integer >= 0)");
+
+  // a settings line nested deeper than the tool's files is refused before the parser sees it
+  const std::string path = (std::filesystem::temp_directory_path() / "sn_deep_model.bin").string();
+  {
+    std::ofstream out(path, std::ios::binary);
+    out << CLASSIFIER_MODEL_MAGIC << '\n' << std::string(5000, '[') << std::string(5000, ']') << "\nforest";
+  }
+  std::string forest;
+  CHECK(message([&] { read_classifier_settings(path, forest); }) ==
+        path + ": not a usable classifier model: arrays or objects nested deeper than 16: not a file of the tool");
+  std::filesystem::remove(path);
 }

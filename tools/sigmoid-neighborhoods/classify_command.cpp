@@ -82,10 +82,6 @@ Feature_options read_feature_options(const Arguments& args)
   o.threads = read_threads(args);
   o.pyramid_cell = args.get_double("--pyramid-cell", o.pyramid_cell);
   o.pyramid_levels = args.get_unsigned("--pyramid-levels", o.pyramid_levels);
-  if(!(o.pyramid_cell > 0.) || !std::isfinite(o.pyramid_cell))
-    throw Usage_error("--pyramid-cell must be a positive cell size in metres");
-  if(o.pyramid_levels < 1 || o.pyramid_levels > 32)
-    throw Usage_error("--pyramid-levels must be 1 to 32");
   if(args.has("--sigmoid"))
   {
     // the smaller angle is a, the larger b; one angle is a step (a = b)
@@ -96,26 +92,17 @@ Feature_options read_feature_options(const Arguments& args)
     o.sigmoid_b = ab.back();
   }
   if(args.has("--pyramid-sigmoid-cells"))
-  {
-    const std::vector<double> cells = o.pyramid_cell_sizes();
     for(const std::string& item : split(args.get("--pyramid-sigmoid-cells"), ','))
     {
       char* end = nullptr;
       const double cell = std::strtod(item.c_str(), &end);
-      if(item.empty() || *end != '\0' || std::find(cells.begin(), cells.end(), cell) == cells.end())
-        throw Usage_error("--pyramid-sigmoid-cells: '" + item +
-                          "' is not a cell size of the pyramid (--pyramid-cell x 2^l)");
+      if(item.empty() || *end != '\0')
+        throw Usage_error("--pyramid-sigmoid-cells: '" + item + "' is not a cell size in metres");
       std::vector<double>& chosen = o.pyramid_sigmoid_cells;
       if(std::find(chosen.begin(), chosen.end(), cell) == chosen.end())
         chosen.push_back(cell);
     }
-  }
-  if(args.has("--cgal-voxel"))
-  {
-    o.cgal_voxel = args.get_double("--cgal-voxel", 0.);
-    if(!(o.cgal_voxel > 0.) || !std::isfinite(o.cgal_voxel))
-      throw Usage_error("--cgal-voxel must be a positive voxel size in metres");
-  }
+  o.cgal_voxel = args.get_double("--cgal-voxel", o.cgal_voxel);
   if(args.has("--scales"))
   {
     // ascending and distinct: the columns are named by k
@@ -132,8 +119,7 @@ Feature_options read_feature_options(const Arguments& args)
     o.scales.erase(std::unique(o.scales.begin(), o.scales.end()), o.scales.end());
   }
   o.cgal_scales = args.get_unsigned("--cgal-scales", o.cgal_scales);
-  if(o.cgal_scales < 1 || o.cgal_scales > 32)
-    throw Usage_error("--cgal-scales must be 1 to 32");
+  o.check(Feature_options::COMMAND_LINE);
   return o;
 }
 
@@ -152,7 +138,7 @@ int run_classify(int argc, char** argv)
     return run_classify_experiment(argc, argv);
   if(sub == "-h" || sub == "--help")
   {
-    std::cout << classification::CLASSIFY_USAGE << FEATURE_GROUPS_USAGE << NORMAL_USAGE;
+    std::cout << classification::CLASSIFY_USAGE << feature_groups_usage() << NORMAL_USAGE;
     return EXIT_OK;
   }
   throw Usage_error(sub.empty() ? "classify needs train, predict, evaluate or experiment"

@@ -5,6 +5,7 @@
 // of its tiles, under a model file, written as a PLY.
 
 #include "classification/classify_common.h"
+#include "classification/feature_groups.h"
 #include "classification/feature_options.h"
 #include "catalog_input.h"
 #include "command_line.h"

@@ -31,7 +31,7 @@ int run_classify_train(int argc, char** argv)
                        with_normal_flags({"-h", "--help"}), NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, CLASSIFY_USAGE))
   {
-    std::cout << FEATURE_GROUPS_USAGE << NORMAL_USAGE;
+    std::cout << feature_groups_usage() << NORMAL_USAGE;
     return EXIT_OK;
   }
   if(args.positional().empty())

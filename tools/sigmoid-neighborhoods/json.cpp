@@ -70,9 +70,14 @@ Json_value read_json_file(const std::string& path, std::uintmax_t largest)
   text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   if(text.size() > largest) // grown since its size was read
     throw json_error(path, "larger than the " + std::to_string(largest >> 20) + " MiB of an evaluation file");
+  return parse_json_text(text, path);
+}
+
+Json_value parse_json_text(const std::string& text, const std::string& file)
+{
   if(json_depth(text, DEEPEST_JSON) > DEEPEST_JSON)
-    throw json_error(path, "arrays or objects nested deeper than " + std::to_string(DEEPEST_JSON) +
-                             ": not an evaluation file");
+    throw json_error(file, "arrays or objects nested deeper than " + std::to_string(DEEPEST_JSON) +
+                             ": not a file of the tool");
   try
   {
     return Json_value::parse(text);
@@ -84,7 +89,8 @@ Json_value read_json_file(const std::string& path, std::uintmax_t largest)
     const std::size_t tag = what.find("] ");
     if(tag != std::string::npos)
       what = what.substr(tag + 2);
-    throw json_error(path, "not valid JSON: " + what);
+    throw json_error(file, "not valid JSON: " + what);
   }
 }
+
 } // namespace sigmoid_tool

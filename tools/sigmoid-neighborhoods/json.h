@@ -63,6 +63,10 @@ Usage_error json_error(const std::string& file, const std::string& what);
 // Reads and parses `path`, refused when larger than `largest` bytes or nested deeper than DEEPEST_JSON.
 Json_value read_json_file(const std::string& path, std::uintmax_t largest);
 
+// Parses `text` read from `file` (a line of a file of the tool), refused when nested deeper than
+// DEEPEST_JSON or not JSON, with a message naming `file`.
+Json_value parse_json_text(const std::string& text, const std::string& file);
+
 // The largest count (points, models, histogram entries) read: 2^40, far beyond any evaluation,
 // so that sums over a million models still fit in 64 bits.
 constexpr std::uint64_t LARGEST_COUNT = std::uint64_t(1) << 40;

@@ -11,12 +11,15 @@
 
 #include "feature_options.h"
 #include "label_mapping.h"
+#include "../json.h"
 #include "../model_input.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -68,105 +71,104 @@ inline nlohmann::json settings_json(const Classifier_settings& s)
   return j;
 }
 
-// Throws Usage_error naming `path` and what is wrong: the file is the tool's input too.
+// Throws Usage_error naming `path` and what is wrong: the file is the tool's input too. The feature
+// settings follow the command line's rules (Feature_options::check()).
 inline Classifier_settings settings_from_json(const nlohmann::json& j, const std::string& path)
 {
-  auto bad = [&](const std::string& what) { return Usage_error(path + ": not a usable classifier model: " + what); };
+  const std::string file = path + ": not a usable classifier model";
+  constexpr std::uint64_t LARGEST_UNSIGNED = std::numeric_limits<unsigned int>::max();
+  auto unsigned_value = [](const Json_object& o, const char* key) { return unsigned(o.integer(key, 0, LARGEST_UNSIGNED)); };
+  auto unsigned_values = [&](const Json_object& o, const char* key) {
+    std::vector<unsigned int> values;
+    const Json_value& a = o.array(key, 1024);
+    for(const std::uint64_t v : o.integers(key, a.size(), LARGEST_UNSIGNED))
+      values.push_back(unsigned(v));
+    return values;
+  };
+  const double not_a_number = std::numeric_limits<double>::quiet_NaN(); // null: refused by check()
   try
   {
+    const Json_object model(j, file);
     Classifier_settings s;
-    s.labels = parse_label_mapping(j.at("labels").get<std::string>());
-    const nlohmann::json& f = j.at("features");
-    std::string groups;
-    for(const auto& g : f.at("groups"))
-      groups += (groups.empty() ? "" : ",") + g.get<std::string>();
-    s.features.groups = parse_feature_groups(groups);
-    s.features.fixed_k = f.at("fixed_k").get<unsigned int>();
-    s.features.k_min = f.at("k_min").get<unsigned int>();
-    s.features.k_max = f.at("k_max").get<unsigned int>();
-    s.features.scales = f.at("scales").get<std::vector<unsigned int>>();
-    const std::vector<double> sigmoid = f.at("sigmoid").get<std::vector<double>>();
-    s.features.cell_sizes = f.at("cell_sizes").get<std::vector<double>>();
-    s.features.cgal_scales = f.at("cgal_scales").get<unsigned int>();
-    if(f.contains("cgal_voxel")) // models written before it have none (nor the group cgal-metric)
-      s.features.cgal_voxel = f.at("cgal_voxel").get<double>();
-    // models written before the anchor have CGAL's grids, anchored at the bounding box
-    const std::string anchor = f.value("cgal_grid_anchor", std::string("bounding box"));
-    if(anchor != "origin" && anchor != "bounding box")
-      throw bad("unknown cgal_grid_anchor '" + anchor + "'");
-    s.features.cgal_grids_at_origin = anchor == "origin";
-    if(sigmoid.size() != 2 || !(sigmoid[0] >= 0. && sigmoid[0] <= sigmoid[1] && sigmoid[1] <= CGAL_PI))
-      throw bad("the sigmoid is not 0 <= a <= b <= pi");
+    s.labels = parse_label_mapping(model.string("labels", 1 << 16));
+    const Json_object f = model.object("features");
+    for(const Json_value& g : f.array("groups", 64))
+    {
+      if(!g.is_string())
+        f.fail("features.groups", "holds " + Json_object::type_name(g) + ", expected group names");
+      s.features.groups.push_back(g.get<std::string>());
+    }
+    s.features.fixed_k = unsigned_value(f, "fixed_k");
+    s.features.k_min = unsigned_value(f, "k_min");
+    s.features.k_max = unsigned_value(f, "k_max");
+    s.features.scales = unsigned_values(f, "scales");
+    const std::vector<double> sigmoid = f.numbers("sigmoid", 2);
+    if(sigmoid.size() != 2)
+      f.fail("features.sigmoid", "is not two angles");
     s.features.sigmoid_a = sigmoid[0];
     s.features.sigmoid_b = sigmoid[1];
-    const unsigned int largest_k = 10000;
-    if(s.features.fixed_k < 1 || s.features.fixed_k > largest_k || s.features.k_min < 1 ||
-       s.features.k_min > s.features.k_max || s.features.k_max > largest_k || s.features.scales.empty() ||
-       s.features.scales.size() > 64 || s.features.cell_sizes.empty() || s.features.cell_sizes.size() > 64 ||
-       s.features.cgal_scales < 1 || s.features.cgal_scales > 32 || !(s.features.cgal_voxel > 0.) ||
-       !std::isfinite(s.features.cgal_voxel))
-      throw bad("feature settings out of range");
-    for(unsigned int k : s.features.scales)
-      if(k < 1 || k > largest_k)
-        throw bad("a scale out of range");
-    for(double c : s.features.cell_sizes)
-      if(!(c > 0.) || !std::isfinite(c))
-        throw bad("a cell size is not positive");
-    if(f.contains("pyramid")) // models written before the pyramid have none: the defaults, unused
+    s.features.cell_sizes = f.numbers("cell_sizes", 1024);
+    s.features.cgal_scales = unsigned_value(f, "cgal_scales");
+    if(f.has("cgal_voxel")) // models written before it have none (nor the group cgal-metric)
+      s.features.cgal_voxel = f.number("cgal_voxel", not_a_number);
+    // models written before the anchor have CGAL's grids, anchored at the bounding box
+    s.features.cgal_grids_at_origin =
+      f.has("cgal_grid_anchor") && f.choice("cgal_grid_anchor", {"origin", "bounding box"}) == "origin";
+    std::vector<double> written_cells; // the pyramid's cell sizes as written, for the reader
+    if(f.has("pyramid")) // models written before the pyramid have none: the defaults, unused
     {
-      const nlohmann::json& p = f.at("pyramid");
-      s.features.pyramid_cell = p.at("cell").get<double>();
-      s.features.pyramid_levels = p.at("levels").get<unsigned int>();
-      s.features.pyramid_k = p.at("k").get<unsigned int>();
-      if(!(s.features.pyramid_cell > 0.) || !std::isfinite(s.features.pyramid_cell) || s.features.pyramid_levels < 1 ||
-         s.features.pyramid_levels > 32 || s.features.pyramid_k < 1 || s.features.pyramid_k > largest_k ||
-         !std::isfinite(s.features.pyramid_cell_sizes().back()))
-        throw bad("pyramid settings out of range");
-      if(p.contains("cell_sizes") && p.at("cell_sizes").get<std::vector<double>>() != s.features.pyramid_cell_sizes())
-        throw bad("the pyramid's cell sizes are not its cell times 1, 2, 4 ...");
-      if(p.contains("sigmoid_cells")) // empty, or absent in older models: every level
-      {
-        s.features.pyramid_sigmoid_cells = p.at("sigmoid_cells").get<std::vector<double>>();
-        const std::vector<double> cells = s.features.pyramid_cell_sizes();
-        for(double c : s.features.pyramid_sigmoid_cells)
-          if(std::find(cells.begin(), cells.end(), c) == cells.end())
-            throw bad("a sigmoid cell is not a cell size of the pyramid");
-      }
+      const Json_object p = f.object("pyramid");
+      s.features.pyramid_cell = p.number("cell", not_a_number);
+      s.features.pyramid_levels = unsigned_value(p, "levels");
+      s.features.pyramid_k = unsigned_value(p, "k");
+      if(p.has("sigmoid_cells")) // empty, or absent in older models: every level
+        s.features.pyramid_sigmoid_cells = p.numbers("sigmoid_cells", 64);
+      if(p.has("cell_sizes"))
+        written_cells = p.numbers("cell_sizes", 64);
     }
-    const nlohmann::json& n = j.at("normals");
-    s.normals.source = n.at("source").get<std::string>() == "jet" ? SN::Normal_source::JET : SN::Normal_source::PCA;
-    s.normals.neighbors = n.at("neighbors").get<unsigned int>();
-    if(s.normals.neighbors < 5 || s.normals.neighbors > largest_k)
-      throw bad("normal neighbors out of range");
-    const std::string orientation = n.at("orientation").get<std::string>();
+    s.features.check(Feature_options::MODEL_FILE);
+    if(!written_cells.empty() && written_cells != s.features.pyramid_cell_sizes())
+      f.fail("features.pyramid.cell_sizes", "are not its cell times 1, 2, 4 ...");
+    const Json_object n = model.object("normals");
+    s.normals.source = n.choice("source", {"jet", "pca"}) == "jet" ? SN::Normal_source::JET : SN::Normal_source::PCA;
+    s.normals.neighbors = unsigned_value(n, "neighbors");
+    if(s.normals.neighbors < 5 || s.normals.neighbors > 10000)
+      n.fail("normals.neighbors", "is " + std::to_string(s.normals.neighbors) + ", expected 5 to 10000");
+    const std::string orientation = n.string("orientation", 64);
     try
     {
       s.normals.orientation = SN::normal_orientation_from_name(orientation);
     }
     catch(const std::invalid_argument&)
     {
-      throw bad("unknown orientation '" + orientation + "'");
+      n.fail("normals.orientation", "is '" + orientation + "', not an orientation");
     }
-    const std::vector<double> v = n.at("viewpoint").get<std::vector<double>>();
+    const std::vector<double> v = n.numbers("viewpoint", 3);
     if(v.size() != 3)
-      throw bad("the viewpoint is not three numbers");
+      n.fail("normals.viewpoint", "is not three numbers");
     s.normals.viewpoint = SN::Oriented_point_set::Point_3(v[0], v[1], v[2]);
-    s.feature_names = j.at("feature_names").get<std::vector<std::string>>();
-    s.trees = j.at("trees").get<unsigned int>();
-    s.depth = j.at("depth").get<unsigned int>();
-    s.feature_order_seed = j.at("feature_order_seed").get<unsigned int>();
-    s.max_per_class = j.value("max_per_class", 0u); // absent from older models
+    const Json_value& names = model.array("feature_names", 1 << 16);
+    for(const Json_value& name : names)
+    {
+      if(!name.is_string())
+        model.fail("feature_names", "holds " + Json_object::type_name(name) + ", expected names");
+      s.feature_names.push_back(name.get<std::string>());
+    }
     if(s.feature_names.empty())
-      throw bad("no features");
+      model.fail("feature_names", "is empty: no features");
+    s.trees = unsigned_value(model, "trees");
+    s.depth = unsigned_value(model, "depth");
+    s.feature_order_seed = unsigned_value(model, "feature_order_seed");
+    s.max_per_class = unsigned(model.integer_or("max_per_class", 0, 0, LARGEST_UNSIGNED)); // absent from older models
     return s;
-  }
-  catch(const nlohmann::json::exception& e)
-  {
-    throw bad(e.what());
   }
   catch(const Usage_error& e)
   {
-    throw bad(e.what());
+    // Json_object's messages name the file already; the others (labels, feature settings) not
+    const std::string what = e.what();
+    if(what.compare(0, file.size(), file) == 0)
+      throw;
+    throw Usage_error(file + ": " + what);
   }
 }
 
@@ -188,37 +190,7 @@ inline Classifier_settings read_classifier_settings(const std::string& path, std
       throw Usage_error(path + ": not a usable classifier model: its settings line is longer than 1 MiB");
     header.push_back(c);
   }
-  // a model's settings nest 3 deep: deeper is forged, and would take nlohmann's recursive destructor deep
-  int depth = 0, deepest = 0;
-  bool in_string = false, escaped = false;
-  for(char ch : header)
-  {
-    if(in_string)
-    {
-      if(escaped)
-        escaped = false;
-      else if(ch == '\\')
-        escaped = true;
-      else if(ch == '"')
-        in_string = false;
-      continue;
-    }
-    in_string = ch == '"';
-    depth += (ch == '[' || ch == '{') - (ch == ']' || ch == '}');
-    deepest = std::max(deepest, depth);
-  }
-  if(deepest > 8)
-    throw Usage_error(path + ": not a usable classifier model: its settings nest " + std::to_string(deepest) + " deep");
-  nlohmann::json j;
-  try
-  {
-    j = nlohmann::json::parse(header);
-  }
-  catch(const nlohmann::json::exception& e)
-  {
-    throw Usage_error(path + ": not a usable classifier model: " + e.what());
-  }
-  Classifier_settings s = settings_from_json(j, path);
+  Classifier_settings s = settings_from_json(parse_json_text(header, path + ": not a usable classifier model"), path);
   std::ostringstream rest;
   rest << in.rdbuf();
   forest_bytes = rest.str();

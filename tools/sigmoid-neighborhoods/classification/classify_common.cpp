@@ -400,22 +400,6 @@ void write_evaluation(const std::string& dir, const Confusion& c, const Label_ma
   });
 }
 
-double checked_halo_width_of_tile(const SN::Oriented_point_set& model, const Feature_options& features,
-                                  const CGAL::Bbox_2& extent, std::size_t first, std::size_t last)
-{
-  using internal_classification::has_group;
-  double width = 0.;
-  if(first == last)
-    return width;
-  if(internal_classification::has_pyramid(features))
-    width = pyramid_halo_width(model, features, extent, first, last);
-  const bool metric = has_group(features, "cgal-metric");
-  if(features.cgal_grids_at_origin && (metric || has_group(features, "cgal-grid")))
-    width = std::max(width, anchored_cgal_halo_width(model, features.cgal_scales, features.cgal_voxel, !metric,
-                                                     features.threads, extent, first, last));
-  return width;
-}
-
 double read_graphcut(const Arguments& args)
 {
   const double strength = args.get_double("--graphcut", 0.);

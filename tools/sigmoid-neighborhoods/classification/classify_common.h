@@ -98,13 +98,6 @@ Prediction predict(const Featured_file& file, const Classifier_settings& setting
 void write_prediction_ply(const std::string& path, const Featured_file& file, const Prediction& p,
                           const Label_mapping& m, std::size_t first = 0, std::size_t last = std::size_t(-1));
 
-// The halo a tile needs for the groups of `features` whose reach depends on the points (the pyramid
-// groups; cgal-metric's neighbors and cgal-grid's windows) to give its points `first` ... `last - 1`
-// the union's records, checked on `model`, the tile of extent `extent` with its halo: at most the
-// halo's width when it holds (0 without such a group).
-double checked_halo_width_of_tile(const SN::Oriented_point_set& model, const Feature_options& features,
-                                  const CGAL::Bbox_2& extent, std::size_t first, std::size_t last);
-
 void write_evaluation(const std::string& dir, const Confusion& c, const Label_mapping& m, const std::string& title);
 
 } // namespace classification

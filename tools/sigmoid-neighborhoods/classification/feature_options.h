@@ -1,9 +1,10 @@
 // Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The feature groups of classify: their names and options (this header, light: every classify
-// subcommand parses them) and what each group needs from the input (neighbors, halo). Their
-// computation is in feature_groups.h.
+// The feature groups of classify: their options and the table of groups, each with what it needs
+// from the input (neighbors, halo) and how it is computed. This header is light: every classify
+// subcommand parses the options; the checks are in feature_options.cpp, the table and the
+// computations in feature_groups.cpp.
 
 #ifndef SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_FEATURE_OPTIONS_H
 #define SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_FEATURE_OPTIONS_H
@@ -16,13 +17,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+struct Oriented_point_set;
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
 
 namespace sigmoid_tool {
 
 namespace SN = CGAL::Sigmoid_neighborhoods;
-
 
 struct Feature_column
 {
@@ -73,6 +80,17 @@ struct Feature_options
     return pyramid_sigmoid_cells.empty() ||
            std::find(pyramid_sigmoid_cells.begin(), pyramid_sigmoid_cells.end(), cell) != pyramid_sigmoid_cells.end();
   }
+
+  // Where the settings come from, for the names in check()'s messages.
+  enum Source { COMMAND_LINE, MODEL_FILE };
+
+  // Throws Usage_error naming the first setting out of range (its option, or its key in a model file):
+  // the same rules for the command line and the model files. The groups as check_groups(); none is
+  // not an error here (the command line reads them apart from the other settings).
+  void check(Source source) const;
+
+  // The groups alone: known, each once, at most one of a family (CGAL's).
+  void check_groups(Source source) const;
 };
 
 // classify train's groups without --features: the set that the cross-validation on the training
@@ -80,125 +98,64 @@ struct Feature_options
 // at both), among the manual's sets (benchmark/README.md, "Classification across densities").
 inline const char* const DEFAULT_FEATURE_GROUPS = "cgal-metric,multiscale-sigmoid,pyramid";
 
-inline const char* FEATURE_GROUPS_USAGE =
-  "  --features GROUPS: comma-separated, in any combination (default cgal-metric,multiscale-sigmoid,pyramid:\n"
-  "      the best in cross-validation at the training density and trained 4x thinner, benchmark/README.md):\n"
-  "      cgal            CGAL's Point_set_feature_generator on 5 scales (eigenvalues, heights, ...), the\n"
-  "                      first from each file's spacing, as CGAL chooses it\n"
-  "      cgal-metric     the same on scales in metres: --cgal-voxel 0.5 m times 1, 2, 4 ... (a model\n"
-  "                      applies at another density), its grids anchored at the origin (tile by tile)\n"
-  "      cgal-grid       the features of cgal-metric's planimetric grids alone (vertical dispersion,\n"
-  "                      elevation, heights below and above, vertical range): no eigen analysis\n"
-  "      k20             the eigen features (linearity ... normal_z) at k = 20, equal weights\n"
-  "      eigenentropy    the same at the eigenentropy-optimal k of Weinmann et al., equal weights, and k\n"
-  "      dimensionality  the same at the E_dim-optimal k, equal weights, and k\n"
-  "      optimal         the same at the optimal sigmoid triple (a*, b*, k*), and k, a, b, the radius\n"
-  "      multiscale      the eigen features at k = 10, 25, 50, 100 (--scales), equal weights\n"
-  "      multiscale-sigmoid  the same with the sigmoid weights of --sigmoid A,B (default 30deg,60deg; the\n"
-  "                      smaller angle is a, the larger b, one angle a step; pyramid-sigmoid's weights too)\n"
-  "      height          z above the lowest point, below the highest and the range in 2.5, 5, 10 m cells\n"
-  "      pyramid         the eigen features at k = 10 on voxel grids of --pyramid-cell x 2^l metres, l below\n"
-  "                      --pyramid-levels, each point's from its nearest representative, and the heights\n"
-  "                      in the same cells (scales in metres: a model applies at another density)\n"
-  "      pyramid-sigmoid the same with the sigmoid weights of --sigmoid, on the levels of\n"
-  "                      --pyramid-sigmoid-cells C,... (default every level; the others with equal weights)\n";
+struct Feature_group_input; // feature_groups.cpp: the point set, its neighbor rows, the shared pyramid
 
-inline const std::vector<std::string>& known_feature_groups()
+// One feature group of classify: everything the tool knows of it, one entry of feature_groups().
+// What a group needs depends on the options alone, not on the other groups, so that the needs of a
+// set of groups are the largest of its groups' (a function shared by groups is evaluated once).
+struct Feature_group
 {
-  static const std::vector<std::string> groups{"cgal",         "cgal-metric",        "cgal-grid", "k20", "eigenentropy",
-                                               "dimensionality", "optimal",            "multiscale",
-                                               "multiscale-sigmoid", "height", "pyramid", "pyramid-sigmoid"};
-  return groups;
-}
+  const char* name;
+  const char* help; // its lines of --help after the name, '\n' between lines
+  // the k nearest neighbors its features read (0: none)
+  unsigned int (*neighbors)(const Feature_options&);
+  // the halo a tile needs around its extent for its cells and grids (0: none); `first_guess`: with a
+  // first guess of the reach of the groups whose reach the points decide (checked_halo)
+  double (*halo)(const Feature_options&, bool first_guess);
+  // the halo that its points need, for groups whose reach the points decide, checked on a tile (extent,
+  // points first ... last - 1) read with a halo: at most that halo's width when it holds; nullptr: halo()
+  double (*checked_halo)(const SN::Oriented_point_set& model, const Feature_options&, const CGAL::Bbox_2& extent,
+                         std::size_t first, std::size_t last);
+  // whether a tile with its halo gets the union's features (false: its features depend on the whole set)
+  bool (*on_tiles)(const Feature_options&);
+  // appends its columns, named and ordered as the model files name them
+  void (*compute)(Feature_group_input&, std::vector<Feature_column>&);
+  // groups of one family give the same columns (CGAL's): one of them at most in a set
+  const char* family;
+};
 
-inline std::vector<std::string> parse_feature_groups(const std::string& text)
-{
-  std::vector<std::string> groups;
-  for(const std::string& group : split(text, ','))
-  {
-    const auto& known = known_feature_groups();
-    if(std::find(known.begin(), known.end(), group) == known.end())
-      throw Usage_error("--features: unknown group '" + group +
-                        "': expected cgal, cgal-metric, cgal-grid, k20, eigenentropy, dimensionality, optimal, multiscale, "
-                        "multiscale-sigmoid, height, pyramid or pyramid-sigmoid");
-    if(std::find(groups.begin(), groups.end(), group) != groups.end())
-      throw Usage_error("--features: group '" + group + "' given twice");
-    groups.push_back(group);
-  }
-  auto has = [&](const char* g) { return std::find(groups.begin(), groups.end(), g) != groups.end(); };
-  if(int(has("cgal")) + int(has("cgal-metric")) + int(has("cgal-grid")) > 1)
-    throw Usage_error("--features: cgal, cgal-metric and cgal-grid share CGAL's features (cgal-grid its grids' "
-                      "alone): give one of them");
-  return groups;
-}
+// The groups, in the order of --help.
+const std::vector<Feature_group>& feature_groups();
 
-namespace internal_classification {
+// The group named `name`; nullptr when there is none.
+const Feature_group* find_feature_group(const std::string& name);
 
-inline bool has_group(const Feature_options& o, const char* group)
-{
-  return std::find(o.groups.begin(), o.groups.end(), group) != o.groups.end();
-}
+// The entries of the groups of `o`, in its order (checked by Feature_options::check()).
+std::vector<const Feature_group*> groups_of(const Feature_options& o);
 
-inline bool has_pyramid(const Feature_options& o) { return has_group(o, "pyramid") || has_group(o, "pyramid-sigmoid"); }
+// --help's lines on --features, from feature_groups().
+std::string feature_groups_usage();
 
-} // namespace internal_classification
+// The groups of a --features list, checked (Feature_options::check_groups()).
+std::vector<std::string> parse_feature_groups(const std::string& text);
 
 // The largest neighborhood the package's groups of `o` need (0: none, CGAL's and the heights only).
-inline unsigned int largest_neighborhood(const Feature_options& o)
-{
-  using internal_classification::has_group;
-  unsigned int k = 0;
-  if(has_group(o, "k20"))
-    k = std::max(k, o.fixed_k);
-  if(has_group(o, "eigenentropy") || has_group(o, "dimensionality") || has_group(o, "optimal"))
-    k = std::max(k, o.k_max);
-  if(has_group(o, "multiscale") || has_group(o, "multiscale-sigmoid"))
-    k = std::max(k, *std::max_element(o.scales.begin(), o.scales.end()));
-  return k;
-}
+unsigned int largest_neighborhood(const Feature_options& o);
+
+// The halo the groups of `o` need around a tile (0: none); `first_guess` false: what their cells and
+// grids need alone, without the first guess of the groups whose reach the points decide (the caller
+// gives that halo), see Feature_group::checked_halo.
+double cell_halo(const Feature_options& o, bool first_guess = true);
+
+// The groups of `o` whose features depend on the whole point set, so that a tile with any halo gets
+// other values than the union's (the group cgal: CGAL's generator takes its scales from the average
+// spacing; cgal-metric and cgal-grid in older models, whose grids CGAL anchors at the bounding box):
+// "" when there is none, else the first one's name.
+std::string whole_set_groups(const Feature_options& o);
 
 // How far the grids of the groups cgal-metric and cgal-grid reach when anchored at the origin
 // (SN::Classification::anchored_cgal_grid_reach(), cgal_features.cpp).
 double anchored_cgal_grid_reach(const Feature_options& o);
-
-// The halo the groups height, pyramid, cgal-metric and cgal-grid need around a tile (0: none). Height: a cell meeting the
-// tile lies within its side of the tile, so a halo that wide holds every point of the tile's cells.
-// The relative margin covers the rounding of x / side at the cells' borders while |x| / side stays
-// below 10^9. Pyramid: a first guess only, 4 coarsest cells (a point's nearest representative within
-// a cell's diagonal, 1.7 cells, the k = 10 nearest of that one within about 2 cells on a surface, and
-// their cells; the six IGN tiles need 3.4 to 3.9); pyramid_halo_width() (feature_groups.h) checks it
-// on what was read, and the tile is read again with a wider halo when it does not hold.
-// cgal-metric and cgal-grid anchored at the origin: their grids' windows, with the same margin; their
-// neighbors are checked on what was read, as the pyramid's (anchored_cgal_halo_width()).
-// `pyramid_guess` false: what the cells need alone (the caller gives the pyramid's first halo).
-inline double cell_halo(const Feature_options& o, bool pyramid_guess = true)
-{
-  using internal_classification::has_group;
-  double halo = 0.;
-  if(has_group(o, "height"))
-    halo = *std::max_element(o.cell_sizes.begin(), o.cell_sizes.end()) * (1. + 1e-6);
-  if(internal_classification::has_pyramid(o))
-    halo = std::max(halo, o.pyramid_cell_sizes().back() * (1. + 1e-6)); // the heights in its cells
-  if(pyramid_guess && internal_classification::has_pyramid(o))
-    halo = std::max(halo, 4. * o.pyramid_cell_sizes().back());
-  if(o.cgal_grids_at_origin && (has_group(o, "cgal-metric") || has_group(o, "cgal-grid")))
-    halo = std::max(halo, anchored_cgal_grid_reach(o) * (1. + 1e-6)); // the grids' windows
-  return halo;
-}
-
-// The groups of `o` that depend on the whole point set (the cgal group: CGAL's generator takes its
-// scales from the average spacing; cgal-metric and cgal-grid in older models, whose grids CGAL anchors
-// at the bounding box), so that a tile with any halo gets other values than the union: "" when there
-// is none.
-inline std::string whole_set_groups(const Feature_options& o)
-{
-  using internal_classification::has_group;
-  if(has_group(o, "cgal"))
-    return "cgal";
-  if(o.cgal_grids_at_origin)
-    return "";
-  return has_group(o, "cgal-metric") ? "cgal-metric" : has_group(o, "cgal-grid") ? "cgal-grid" : "";
-}
 
 // How much wider than `extent` a tile's halo must be for a point at (x, y) to see every point
 // within `reach` of it (0 or less: the extent alone does), with a relative margin for rounding.
