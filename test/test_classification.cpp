@@ -23,11 +23,14 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -35,6 +38,25 @@ namespace SN = CGAL::Sigmoid_neighborhoods;
 namespace SNP = CGAL::Sigmoid_neighborhoods::parameters;
 
 namespace {
+
+// The bytes of a forest of CGAL 5.5's ETHZ format (Ethz_forest::problem()) with the split feature and
+// threshold of its leaves zeroed: CGAL leaves them uninitialised, so that they may differ between two
+// trainings of the same trees.
+std::string with_leaves_masked(std::string bytes, std::size_t labels)
+{
+  std::uint32_t trees = 0;
+  std::memcpy(&trees, bytes.data() + 32, 4);
+  std::size_t at = 36;
+  const std::size_t node_bytes = 17 + 4 * labels;
+  for(std::uint32_t t = 0; t < trees; ++t)
+    for(std::size_t pending = 1; pending > 0; --pending, at += node_bytes)
+      if(bytes.at(at) != 0)
+        std::fill_n(bytes.begin() + std::ptrdiff_t(at + 9), 8, '\0');
+      else
+        pending += 2;
+  REQUIRE(at == bytes.size());
+  return bytes;
+}
 
 // An n x n grid of spacing 1 in the plane spanned by u and v, normals `normal`.
 Point_list grid(int n, const Vector_3& u, const Vector_3& v, const Vector_3& normal)
@@ -310,7 +332,8 @@ TEST_CASE("point features enter a CGAL Feature_set and train CGAL's random fores
     CHECK(p.classes == cgal_classes);
     CHECK(p.confidence == cgal_confidence);
     // from a forest in memory, as classify experiment hands it
-    const SNT::Prediction q = SNT::predict(file, settings, std::string(), &classifier, 0.);
+    const SN::Classification::Ethz_forest in_memory(bytes.str(), 2, settings.feature_names.size());
+    const SNT::Prediction q = SNT::predict(file, settings, std::string(), &in_memory, 0.);
     CHECK(q.classes == cgal_classes);
   }
   // the public forest alone, on values handed by a functor
@@ -366,6 +389,87 @@ TEST_CASE("point features enter a CGAL Feature_set and train CGAL's random fores
   }
   settings.labels.names.push_back("car");
   CHECK(refusal(forest) == "it votes for 2 classes, the model names 3");
+}
+
+TEST_CASE("Ethz_forest::train: CGAL's Random_forest_classifier::train() bit for bit, on any thread count",
+          "[classification]")
+{
+  // three classes along two of six features, with noise, a non-finite value and skipped items
+  const std::size_t n = 600, width = 6;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> uniform(0., 1.);
+  std::vector<std::vector<double>> columns(width, std::vector<double>(n));
+  std::vector<int> truth(n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    for(std::size_t f = 0; f < width; ++f)
+      columns[f][i] = uniform(rng);
+    truth[i] = columns[1][i] + 0.2 * uniform(rng) < 0.4 ? 0 : columns[4][i] < 0.5 ? 1 : 2;
+    if(i % 17 == 3)
+      truth[i] = -1; // not a training item
+  }
+  columns[2][10] = std::numeric_limits<double>::quiet_NaN();
+  columns[5][11] = std::numeric_limits<double>::infinity();
+
+  CGAL::Classification::Label_set labels;
+  for(const char* name : {"a", "b", "c"})
+    labels.add(name);
+  CGAL::Classification::Feature_set features;
+  for(std::size_t f = 0; f < width; ++f)
+    features.add<SN::Classification::Feature_values>(columns[f], "f" + std::to_string(f));
+  CGAL::Classification::ETHZ::Random_forest_classifier classifier(labels, features);
+  classifier.train<CGAL::Sequential_tag>(truth, true, 7, 9);
+  std::stringstream cgal_bytes;
+  classifier.save_configuration(cgal_bytes);
+
+  std::vector<float> rows;
+  std::vector<int> row_labels;
+  for(std::size_t i = 0; i < n; ++i)
+    if(truth[i] >= 0)
+    {
+      for(std::size_t f = 0; f < width; ++f)
+        rows.push_back(SN::Classification::Feature_values::stored_value(columns[f][i]));
+      row_labels.push_back(truth[i]);
+    }
+  REQUIRE(std::count(rows.begin(), rows.end(), SN::Classification::Feature_values::NON_FINITE_VALUE) == 2);
+  for(const unsigned int threads : {1u, 2u, 3u})
+  {
+    const SN::Classification::Ethz_forest forest = SN::Classification::Ethz_forest::train<SN::Parallel_if_available_tag>(
+      rows, row_labels, 3, 7, 9, SN::parameters::number_of_threads(threads));
+    CHECK(forest.number_of_labels() == 3);
+    CHECK(forest.number_of_features() == width);
+    std::stringstream bytes;
+    forest.save_configuration(bytes);
+    CHECK(with_leaves_masked(bytes.str(), 3) == with_leaves_masked(cgal_bytes.str(), 3));
+  }
+  const SN::Classification::Ethz_forest sequential =
+    SN::Classification::Ethz_forest::train<CGAL::Sequential_tag>(rows, row_labels, 3, 7, 9);
+  std::stringstream bytes;
+  sequential.save_configuration(bytes);
+  CHECK(with_leaves_masked(bytes.str(), 3) == with_leaves_masked(cgal_bytes.str(), 3));
+  // and the same votes as CGAL's forest on every item, the skipped ones too
+  const SN::Classification::Ethz_forest cgal_forest(cgal_bytes.str(), 3, width);
+  auto value = [&](std::size_t i, std::size_t f) { return columns[f][i]; };
+  std::vector<int> ours_labels, cgal_labels;
+  std::vector<std::vector<float>> ours_votes, cgal_votes;
+  sequential.classify<CGAL::Sequential_tag>(n, value, ours_labels, ours_votes);
+  cgal_forest.classify<CGAL::Sequential_tag>(n, value, cgal_labels, cgal_votes);
+  CHECK(ours_labels == cgal_labels);
+  CHECK(ours_votes == cgal_votes);
+  // a forest that learned something: the training items mostly right
+  std::vector<int> predicted;
+  std::vector<std::vector<float>> confidence;
+  sequential.classify<CGAL::Sequential_tag>(
+    row_labels.size(), [&](std::size_t i, std::size_t f) { return rows[i * width + f]; }, predicted, confidence);
+  std::size_t right = 0;
+  for(std::size_t i = 0; i < row_labels.size(); ++i)
+    right += predicted[i] == row_labels[i];
+  CHECK(right > row_labels.size() * 9 / 10);
+
+  rows.pop_back();
+  CHECK_THROWS_AS(SN::Classification::Ethz_forest::train<CGAL::Sequential_tag>(rows, row_labels, 3, 7, 9),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(SN::Classification::Ethz_forest::train<CGAL::Sequential_tag>({}, {}, 3, 7, 9), std::invalid_argument);
 }
 
 TEST_CASE("the groups cgal, cgal-metric and cgal-grid: CGAL's generator bit for bit, on any thread count",

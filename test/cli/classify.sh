@@ -24,7 +24,7 @@ expect_refusal() { # expected message piece, then the command
 grep -q "model.bin: 34 features, 3 classes, 22300 points" "$dir/train.txt" || fail "train summary: $(cat "$dir/train.txt")"
 head -1 "$dir/model.bin" | grep -q "sigmoid-neighborhoods classifier 1" || fail "model magic"
 
-# the trees trained on 1 and 2 threads (TBB when built with it) on CGAL's features and ours: the same
+# the trees trained on 1 and 2 threads (the package's loop) on CGAL's features and ours: the same
 # forest; at most 500 points a class (two classes of b9 capped, the third has 314)
 for threads in 1 2; do
   "$tool" classify train "$b9" -o "$dir/capped$threads.bin" --labels $labels --features cgal,k20 --trees 4 \

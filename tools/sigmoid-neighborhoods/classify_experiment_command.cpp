@@ -473,7 +473,7 @@ int run_classify_experiment(int argc, char** argv)
         r.train_seconds = t.seconds;
         for(const Featured_file& f : test_set)
         {
-          const Prediction p = predict(f, t.settings, std::string(), t.forest.get(), with_graphcut ? graphcut : 0.);
+          const Prediction p = predict(f, t.settings, std::string(), &*t.forest, with_graphcut ? graphcut : 0.);
           r.classify_seconds += p.seconds;
           for(std::size_t i = 0; i < p.classes.size(); ++i)
             r.confusion.add(f.truth[i], p.classes[i]);
@@ -509,7 +509,7 @@ int run_classify_experiment(int argc, char** argv)
           const Featured_file held_out = with_set(train_files[left_out], set);
           for(int with_graphcut = 0; with_graphcut < 2; ++with_graphcut)
           {
-            const Prediction p = predict(held_out, t.settings, std::string(), t.forest.get(),
+            const Prediction p = predict(held_out, t.settings, std::string(), &*t.forest,
                                          with_graphcut ? graphcut : 0.);
             for(std::size_t i = 0; i < p.classes.size(); ++i)
               pooled[std::size_t(with_graphcut)].add(held_out.truth[i], p.classes[i]);

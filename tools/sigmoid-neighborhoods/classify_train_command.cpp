@@ -51,23 +51,12 @@ int run_classify_train(int argc, char** argv)
   if(t.settings.trees < 1 || t.settings.depth < 1)
     throw Usage_error("--trees and --depth must be at least 1");
   Phase_times times;
-  std::vector<Featured_file> files;
-  for(const std::string& path : args.positional())
-  {
-    files.push_back(read_and_feature(path, t.settings.labels, true, t.settings.normals, t.settings.features));
-    times.end_reading(files.back().model);
-    times.move("reading", "features", files.back().seconds_features);
-  }
-  train(files, t);
-  times.end("training");
+  const std::size_t points = train_file_by_file(args.positional(), t, times);
   write_classifier_model(output, t.settings, *t.forest);
   times.end("writing");
   end_progress();
-  std::size_t points = 0;
-  for(const Featured_file& f : files)
-    points += f.model.points.size();
   std::cerr << output << ": " << t.settings.feature_names.size() << " features, " << t.settings.labels.names.size()
-            << " classes, " << points << " points from " << files.size() << " file(s)"
+            << " classes, " << points << " points from " << args.positional().size() << " file(s)"
             << (t.training_points != points ? " (" + std::to_string(t.training_points) + " trained on)" : std::string())
             << "; " << number_fixed(times.total(), 2) << " s (" << times.text() << ")\n";
   return EXIT_OK;

@@ -60,7 +60,7 @@ inline void fill_feature_set(const std::vector<Feature_column>& columns, const s
 }
 
 inline void write_classifier_model(const std::string& path, const Classifier_settings& s,
-                                   const CGAL::Classification::ETHZ::Random_forest_classifier& forest)
+                                   const SN::Classification::Ethz_forest& forest)
 {
   write_file_atomically(path, [&](std::ofstream& out) {
     out << CLASSIFIER_MODEL_MAGIC << '\n' << settings_json(s).dump() << '\n';

@@ -123,21 +123,6 @@ std::vector<std::string> ordered_names(std::vector<std::string> names, unsigned 
   return names;
 }
 
-// The columns of several files, one after the other.
-std::vector<Feature_column> concatenated(const std::vector<Featured_file>& files)
-{
-  std::vector<Feature_column> result = files.front().columns;
-  for(std::size_t f = 1; f < files.size(); ++f)
-  {
-    if(column_names(files[f].columns) != column_names(result))
-      throw std::logic_error("files with different feature columns");
-    for(std::size_t c = 0; c < result.size(); ++c)
-      result[c].values.insert(result[c].values.end(), files[f].columns[c].values.begin(),
-                              files[f].columns[c].values.end());
-  }
-  return result;
-}
-
 // At most `cap` training points per class (0: all), evenly spaced in the files' order (a scan's order
 // sweeps the ground: the kept points cover the survey), the others marked -1, which CGAL's training
 // skips. Deterministic: the same points for any thread count and run.
@@ -164,60 +149,155 @@ void cap_points_per_class(std::vector<int>& truth, std::size_t classes, std::siz
   }
 }
 
-} // namespace
-
-void train(const std::vector<Featured_file>& files, Trained& t)
+// The training points' features, row-major in the forest's order, as CGAL's forest reads them
+// (Feature_values::stored_value()), and their classes.
+struct Training_rows
 {
-  const std::vector<Feature_column> columns = concatenated(files);
-  t.settings.feature_names = ordered_names(column_names(columns), t.settings.feature_order_seed);
-  t.labels = label_set(t.settings.labels);
-  fill_feature_set(columns, t.settings.feature_names, t.features);
-  std::vector<int> truth;
-  for(const Featured_file& f : files)
-    truth.insert(truth.end(), f.truth.begin(), f.truth.end());
-  std::vector<std::size_t> per_class(t.settings.labels.names.size(), 0);
-  for(int c : truth)
+  std::vector<float> values;
+  std::vector<int> labels;
+};
+
+// Marks -1 in `truth` (one vector per file) the points that do not train (--max-per-class, over the
+// files one after the other), after checking that every class has a point; returns how many train.
+std::size_t choose_training_points(std::vector<std::vector<int>>& truth, const Classifier_settings& s)
+{
+  std::vector<int> all;
+  for(const std::vector<int>& t : truth)
+    all.insert(all.end(), t.begin(), t.end());
+  std::vector<std::size_t> per_class(s.labels.names.size(), 0);
+  for(int c : all)
     if(c >= 0)
       ++per_class[std::size_t(c)];
   for(std::size_t c = 0; c < per_class.size(); ++c)
     if(per_class[c] == 0)
-      throw Usage_error("no training point of class '" + t.settings.labels.names[c] + "' (codes " +
-                        t.settings.labels.text() + ")");
-  cap_points_per_class(truth, per_class.size(), t.settings.max_per_class);
-  const std::size_t used = std::size_t(std::count_if(truth.begin(), truth.end(), [](int c) { return c >= 0; }));
-  progress("training " + std::to_string(t.settings.trees) + " trees on " + std::to_string(used) + " points");
+      throw Usage_error("no training point of class '" + s.labels.names[c] + "' (codes " + s.labels.text() + ")");
+  cap_points_per_class(all, per_class.size(), s.max_per_class);
+  auto from = all.begin();
+  for(std::vector<int>& t : truth)
+  {
+    std::copy(from, from + std::ptrdiff_t(t.size()), t.begin());
+    from += std::ptrdiff_t(t.size());
+  }
+  return std::size_t(std::count_if(all.begin(), all.end(), [](int c) { return c >= 0; }));
+}
+
+// Appends the rows of the points of `columns` whose `truth` is a class, with the features `names`.
+void append_training_rows(const std::vector<Feature_column>& columns, const std::vector<int>& truth,
+                          const std::vector<std::string>& names, unsigned int threads, Training_rows& rows)
+{
+  const std::vector<const std::vector<double>*> ordered = ordered_columns(columns, names);
+  std::vector<std::size_t> points;
+  for(std::size_t i = 0; i < truth.size(); ++i)
+    if(truth[i] >= 0)
+      points.push_back(i);
+  const std::size_t first = rows.labels.size(), width = names.size();
+  rows.labels.resize(first + points.size());
+  rows.values.resize((first + points.size()) * width);
+  const std::ptrdiff_t count = std::ptrdiff_t(points.size());
+#ifdef _OPENMP
+#pragma omp parallel for schedule(static) num_threads(threads == 0 ? omp_get_max_threads() : int(threads))
+#endif
+  for(std::ptrdiff_t r = 0; r < count; ++r)
+  {
+    const std::size_t i = points[std::size_t(r)];
+    float* row = rows.values.data() + (first + std::size_t(r)) * width;
+    for(std::size_t f = 0; f < width; ++f)
+      row[f] = SN::Classification::Feature_values::stored_value((*ordered[f])[i]);
+    rows.labels[first + std::size_t(r)] = truth[i];
+  }
+  (void)threads;
+}
+
+void train_forest(Training_rows& rows, Trained& t)
+{
+  progress("training " + std::to_string(t.settings.trees) + " trees on " + std::to_string(rows.labels.size()) +
+           " points");
   CGAL::Real_timer timer;
   timer.start();
-  t.forest = std::make_unique<Forest>(t.labels, t.features);
-  {
-#ifdef CGAL_LINKED_WITH_TBB
-    // --threads bounds the trees trained at once; the forest does not depend on it
-    std::unique_ptr<tbb::global_control> limit;
-    if(t.settings.features.threads != 0)
-      limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                    t.settings.features.threads);
-#endif
-    t.forest->train<CGAL::Parallel_if_available_tag>(truth, true, t.settings.trees, t.settings.depth);
-  }
+  // --threads bounds the trees trained at once; the forest does not depend on it
+  t.forest.emplace(SN::Classification::Ethz_forest::train<SN::Parallel_if_available_tag>(
+    rows.values, rows.labels, t.settings.labels.names.size(), t.settings.trees, t.settings.depth,
+    SN::parameters::number_of_threads(t.settings.features.threads)));
   t.seconds = timer.time();
-  t.training_points = used;
+  t.training_points = rows.labels.size();
+}
+
+} // namespace
+
+void train(const std::vector<Featured_file>& files, Trained& t)
+{
+  std::vector<std::vector<int>> truth;
+  for(const Featured_file& f : files)
+    truth.push_back(f.truth);
+  const std::size_t used = choose_training_points(truth, t.settings);
+  const std::vector<std::string> names = column_names(files.front().columns);
+  t.settings.feature_names = ordered_names(names, t.settings.feature_order_seed);
+  Training_rows rows;
+  rows.values.reserve(used * names.size());
+  rows.labels.reserve(used);
+  for(std::size_t f = 0; f < files.size(); ++f)
+  {
+    if(column_names(files[f].columns) != names)
+      throw std::logic_error("files with different feature columns");
+    append_training_rows(files[f].columns, truth[f], t.settings.feature_names, t.settings.features.threads, rows);
+  }
+  train_forest(rows, t);
+}
+
+std::size_t train_file_by_file(const std::vector<std::string>& paths, Trained& t, Phase_times& times)
+{
+  // the labels first: they size the rows and choose the training points
+  std::vector<std::vector<int>> truth;
+  for(const std::string& path : paths)
+  {
+    progress(path + ": reading the labels");
+    Featured_file f;
+    f.path = path;
+    f.model = read_input(path, [&] { return read_model(path, 0, t.settings.normals); });
+    add_features(f, t.settings.labels, true, t.settings.features, false);
+    truth.push_back(std::move(f.truth));
+  }
+  times.end("labels");
+  const std::size_t used = choose_training_points(truth, t.settings);
+  Training_rows rows;
+  rows.labels.reserve(used);
+  std::vector<std::string> names;
+  std::size_t points = 0;
+  for(std::size_t p = 0; p < paths.size(); ++p)
+  {
+    const Featured_file f = read_and_feature(paths[p], t.settings.labels, true, t.settings.normals, t.settings.features);
+    times.end_reading(f.model);
+    times.move("reading", "features", f.seconds_features);
+    if(f.truth.size() != truth[p].size())
+      throw Usage_error(paths[p] + ": the file changed while it was read (" + std::to_string(truth[p].size()) +
+                        " points, then " + std::to_string(f.truth.size()) + ")");
+    if(p == 0)
+    {
+      names = column_names(f.columns);
+      t.settings.feature_names = ordered_names(names, t.settings.feature_order_seed);
+      rows.values.reserve(used * names.size()); // the rows' one allocation
+    }
+    else if(column_names(f.columns) != names)
+      throw std::logic_error("files with different feature columns");
+    append_training_rows(f.columns, truth[p], t.settings.feature_names, t.settings.features.threads, rows);
+    times.end("training rows");
+    points += f.model.points.size();
+  }
+  train_forest(rows, t);
+  times.end("training");
+  return points;
 }
 
 Prediction predict(const Featured_file& file, const Classifier_settings& settings, const std::string& forest_bytes,
-                   const Forest* trained, double graphcut)
+                   const SN::Classification::Ethz_forest* trained, double graphcut)
 {
   CGAL::Real_timer timer;
   timer.start();
   const std::size_t n = file.model.points.size(), classes = settings.labels.names.size();
-  std::optional<SN::Classification::Ethz_forest> trees;
-  if(trained != nullptr)
-  {
-    std::stringstream bytes;
-    trained->save_configuration(bytes);
-    trees.emplace(load_forest(file.path, bytes.str(), classes, settings.feature_names.size()));
-  }
-  else
-    trees.emplace(load_forest(file.path, forest_bytes, classes, settings.feature_names.size()));
+  std::optional<SN::Classification::Ethz_forest> loaded;
+  if(trained == nullptr)
+    loaded.emplace(load_forest(file.path, forest_bytes, classes, settings.feature_names.size()));
+  const SN::Classification::Ethz_forest* trees = trained != nullptr ? trained : &*loaded;
   const double seconds_loading = timer.time();
   Prediction p;
   p.confidence.assign(classes, std::vector<float>(n, 0.f));
@@ -227,7 +307,7 @@ Prediction predict(const Featured_file& file, const Classifier_settings& setting
     CGAL::Classification::Label_set labels = label_set(settings.labels);
     CGAL::Classification::Feature_set features;
     fill_feature_set(file.columns, settings.feature_names, features);
-    Forest forest(labels, features);
+    CGAL::Classification::ETHZ::Random_forest_classifier forest(labels, features);
     {
       std::stringstream bytes;
       trees->save_configuration(bytes);

@@ -5,8 +5,8 @@
 // featured, CGAL's ETHZ random forest trained and applied, the outputs and the line of progress. Their
 // definitions are in classify_common.cpp, the one translation unit that instantiates CGAL's training,
 // classify(), graph-cut, the PLY writer and the feature computation of add_features(). This header is
-// light (no CGAL classification, no feature computation): the training, which holds CGAL's label and
-// feature sets, is declared in classify_training.h.
+// light (no CGAL classification, no feature computation): the training, which holds the forest, is
+// declared in classify_training.h.
 
 #ifndef SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_CLASSIFY_COMMON_H
 #define SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_CLASSIFY_COMMON_H
@@ -25,11 +25,11 @@
 #include <vector>
 
 namespace CGAL {
+namespace Sigmoid_neighborhoods {
 namespace Classification {
-namespace ETHZ {
-class Random_forest_classifier;
-} // namespace ETHZ
+class Ethz_forest;
 } // namespace Classification
+} // namespace Sigmoid_neighborhoods
 } // namespace CGAL
 
 namespace sigmoid_tool {
@@ -80,8 +80,6 @@ Featured_file read_and_feature(const std::string& path, const Label_mapping& lab
                                const SN::Normal_options& normals, const Feature_options& features,
                                bool compute_features = true);
 
-typedef CGAL::Classification::ETHZ::Random_forest_classifier Forest;
-
 // The classes of one file under a trained forest, and each class's probability per point.
 struct Prediction
 {
@@ -92,7 +90,7 @@ struct Prediction
 };
 
 Prediction predict(const Featured_file& file, const Classifier_settings& settings, const std::string& forest_bytes,
-                   const Forest* trained, double graphcut);
+                   const SN::Classification::Ethz_forest* trained, double graphcut);
 
 // The points `first` ... `last - 1` of `file` (a tile without its halo), all by default.
 void write_prediction_ply(const std::string& path, const Featured_file& file, const Prediction& p,

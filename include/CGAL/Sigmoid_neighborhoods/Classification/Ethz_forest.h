@@ -131,6 +131,63 @@ public:
     m_forest->read(in);
   }
 
+  /*!
+    trains the forest of CGAL's `Random_forest_classifier::train()` on `labels.size()` items: the same
+    trees, bit for bit, as that classifier trained with `num_trees` and `max_depth` on a `Feature_set`
+    of `Feature_values` holding these values, its ground truth listing these items' labels (and -1
+    for the items it skips), for any number of threads. CGAL's classifier copies every value into a
+    matrix of its own, grown by `push_back`, and trains its trees in parallel on TBB alone; here the
+    caller's matrix is read in place and the trees are trained on the package's parallel loop, each
+    from its own seed as CGAL seeds it.
+    \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag`
+    \param features row-major, `features[i * f + j]` the feature `j` of item `i`, `f` the number of
+    features, as `Feature_values` stores them (`Feature_values::stored_value()`)
+    \param labels the label of each item, in [0, `number_of_labels`)
+    \param number_of_labels the labels the forest votes for
+    \param num_trees the number of trees (CGAL's default: 25)
+    \param max_depth the depth of the trees at most (CGAL's default: 20)
+    \param np optional: `number_of_threads` (0, the default: all)
+    \pre `labels` is not empty, `features.size()` is a multiple of `labels.size()`
+  */
+  template <typename ConcurrencyTag, typename CGAL_NP_TEMPLATE_PARAMETERS>
+  static Ethz_forest train(const std::vector<float>& features, const std::vector<int>& labels,
+                           std::size_t number_of_labels, std::size_t num_trees, std::size_t max_depth,
+                           const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+  {
+    namespace RF = CGAL::internal::liblearning::RandomForest;
+    if(labels.empty() || features.size() % labels.size() != 0)
+      throw std::invalid_argument("Ethz_forest::train: " + std::to_string(features.size()) + " values for " +
+                                  std::to_string(labels.size()) + " items");
+    // RandomForest::train() of CGAL 5.5 with reset trees, no sample indices and seeds from 0, as
+    // Random_forest_classifier::train() calls it, with its loop over the trees on the package's loop
+    RF::ForestParams params;
+    params.n_trees = num_trees;
+    params.max_depth = max_depth;
+    std::unique_ptr<Forest> forest = std::make_unique<Forest>(params);
+    RF::ForestParams& p = forest->params; // the trees point to their forest's parameters
+    p.n_classes = number_of_labels;
+    p.n_features = features.size() / labels.size();
+    p.n_samples = labels.size();
+    std::vector<int> sample_idxes(p.n_samples);
+    for(std::size_t i = 0; i < p.n_samples; ++i)
+      sample_idxes[i] = int(i);
+    const std::size_t n_idxes = sample_idxes.size();
+    p.n_in_bag_samples = n_idxes * (1 - p.sample_reduction); // CGAL's float expression, truncated as CGAL does
+    for(std::size_t t = 0; t < p.n_trees; ++t)
+      forest->trees.push_back(new Forest::TreeType(&p));
+    // the view's element type is not const; nothing writes through it
+    const CGAL::internal::liblearning::DataView2D<float> samples(const_cast<float*>(features.data()), p.n_samples,
+                                                                 p.n_features);
+    const CGAL::internal::liblearning::DataView2D<int> truth(const_cast<int*>(labels.data()), p.n_samples, 1);
+    const RF::AxisAlignedRandomSplitGenerator generator;
+    const RF::Tree_training_functor<Forest::TreeType::NodeType, RF::AxisAlignedRandomSplitGenerator> train_tree(
+      0, sample_idxes, forest->trees, samples, truth, p.n_in_bag_samples, generator);
+    internal::for_each_index<ConcurrencyTag>(
+      p.n_trees, internal::number_of_threads(np), [] { return 0; },
+      [&](std::size_t t, int&) { train_tree.apply(t); }, 1);
+    return Ethz_forest(std::move(forest), number_of_labels, p.n_features);
+  }
+
   /// the number of labels it votes for
   std::size_t number_of_labels() const { return m_labels; }
   /// the number of features it reads
@@ -169,10 +226,7 @@ public:
       },
       [&](std::size_t i, Scratch& s) {
         for(std::size_t f = 0; f < m_features; ++f)
-        {
-          const double v = double(value(i, f));
-          s.sample[f] = std::isfinite(v) ? float(v) : Feature_values::NON_FINITE_VALUE;
-        }
+          s.sample[f] = Feature_values::stored_value(double(value(i, f)));
         m_forest->evaluate(s.sample.data(), s.votes.data());
         float best_value = 0.f;
         for(std::size_t j = 0; j < m_labels; ++j)
@@ -190,6 +244,11 @@ public:
   }
 
 private:
+  Ethz_forest(std::unique_ptr<Forest> forest, std::size_t number_of_labels, std::size_t number_of_features)
+    : m_labels(number_of_labels), m_features(number_of_features), m_forest(std::move(forest))
+  {
+  }
+
   std::size_t m_labels, m_features;
   std::unique_ptr<Forest> m_forest;
 };

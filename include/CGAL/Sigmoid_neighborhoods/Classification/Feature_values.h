@@ -34,12 +34,15 @@ public:
   /// what a non-finite value becomes
   static constexpr float NON_FINITE_VALUE = -1.f;
 
+  /// the value stored for `v`: `float(v)`, or `NON_FINITE_VALUE` if `v` is not finite
+  static float stored_value(double v) { return std::isfinite(v) ? float(v) : NON_FINITE_VALUE; }
+
   /// the feature `name` with `values[i]` at item `i`
   Feature_values(const std::vector<double>& values, const std::string& name)
   {
     m_values.reserve(values.size());
     for(double v : values)
-      m_values.push_back(std::isfinite(v) ? float(v) : NON_FINITE_VALUE);
+      m_values.push_back(stored_value(v));
     set_name(name);
   }
 
