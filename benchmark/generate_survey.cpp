@@ -283,28 +283,28 @@ std::vector<unsigned char> tile_prefix(const Survey& s)
   const std::size_t wkt_bytes = WKT.size() + 1; // with its null
   std::vector<unsigned char> b(las::HEADER_BYTES_1_4 + las::VLR_HEADER_BYTES + wkt_bytes, 0);
   std::memcpy(b.data(), "LASF", 4);
-  las::put<std::uint16_t>(b.data() + las::GLOBAL_ENCODING, 0x11); // adjusted standard GPS time, WKT
+  las::store_little_endian<std::uint16_t>(b.data() + las::GLOBAL_ENCODING, 0x11); // adjusted standard GPS time, WKT
   b[las::VERSION_MAJOR] = 1;
   b[las::VERSION_MINOR] = 4;
   std::strncpy(reinterpret_cast<char*>(b.data() + 26), "synthetic survey", 32);
   std::strncpy(reinterpret_cast<char*>(b.data() + 58), "generate_survey", 32);
-  las::put<std::uint16_t>(b.data() + 90, 1);    // day of the year: fixed, the files repeat bit for bit
-  las::put<std::uint16_t>(b.data() + 92, 2026);
-  las::put<std::uint16_t>(b.data() + las::HEADER_SIZE, std::uint16_t(las::HEADER_BYTES_1_4));
-  las::put<std::uint32_t>(b.data() + las::OFFSET_TO_POINT_DATA, std::uint32_t(b.size()));
-  las::put<std::uint32_t>(b.data() + las::NUMBER_OF_VLRS, 1);
+  las::store_little_endian<std::uint16_t>(b.data() + 90, 1);    // day of the year: fixed, the files repeat bit for bit
+  las::store_little_endian<std::uint16_t>(b.data() + 92, 2026);
+  las::store_little_endian<std::uint16_t>(b.data() + las::HEADER_SIZE, std::uint16_t(las::HEADER_BYTES_1_4));
+  las::store_little_endian<std::uint32_t>(b.data() + las::OFFSET_TO_POINT_DATA, std::uint32_t(b.size()));
+  las::store_little_endian<std::uint32_t>(b.data() + las::NUMBER_OF_VLRS, 1);
   b[las::POINT_FORMAT] = 6;
-  las::put<std::uint16_t>(b.data() + las::RECORD_LENGTH, RECORD_BYTES);
+  las::store_little_endian<std::uint16_t>(b.data() + las::RECORD_LENGTH, RECORD_BYTES);
   const double offsets[3] = {s.origin_x, s.origin_y, 0.};
   for(int c = 0; c < 3; ++c)
   {
-    las::put<double>(b.data() + las::SCALE + 8 * c, SCALE);
-    las::put<double>(b.data() + las::OFFSET + 8 * c, offsets[c]);
+    las::store_little_endian<double>(b.data() + las::SCALE + 8 * c, SCALE);
+    las::store_little_endian<double>(b.data() + las::OFFSET + 8 * c, offsets[c]);
   }
   unsigned char* vlr = b.data() + las::HEADER_BYTES_1_4;
   std::strncpy(reinterpret_cast<char*>(vlr + 2), "LASF_Projection", 16);
-  las::put<std::uint16_t>(vlr + 18, 2112);
-  las::put<std::uint16_t>(vlr + 20, std::uint16_t(wkt_bytes));
+  las::store_little_endian<std::uint16_t>(vlr + 18, 2112);
+  las::store_little_endian<std::uint16_t>(vlr + 20, std::uint16_t(wkt_bytes));
   std::strncpy(reinterpret_cast<char*>(vlr + 22), "OGC WKT", 32);
   std::memcpy(vlr + las::VLR_HEADER_BYTES, WKT.c_str(), wkt_bytes);
   return b;
@@ -378,15 +378,15 @@ std::uint64_t write_tile(const Survey& s, const Terrain& terrain, std::int64_t i
           std::clamp<std::int64_t>(std::llround(ret.y / SCALE), first_y, first_y + cells - 1),
           std::llround(ret.z / SCALE)};
         for(int c = 0; c < 3; ++c)
-          las::put<std::int32_t>(record + 4 * c, std::int32_t(xyz[c]));
+          las::store_little_endian<std::int32_t>(record + 4 * c, std::int32_t(xyz[c]));
         const double brightness = ret.label == BUILDING ? 14000. : ret.label == VEGETATION ? 5000. : 9000.;
-        las::put<std::uint16_t>(record + 12, std::uint16_t(std::clamp(brightness + 1500. * r.normal(), 0., 65535.)));
+        las::store_little_endian<std::uint16_t>(record + 12, std::uint16_t(std::clamp(brightness + 1500. * r.normal(), 0., 65535.)));
         record[14] = std::uint8_t(ret.number | (ret.of << 4));
         record[15] = std::uint8_t(backwards ? 0 : 0x40); // scan direction flag
         record[16] = ret.label;
-        las::put<std::int16_t>(record + 18, std::int16_t(std::lround((along / side - 0.5) * 20. / 0.006)));
-        las::put<std::uint16_t>(record + 20, std::uint16_t(1 + j % 65535)); // a flight line per row of tiles
-        las::put<double>(record + 22, gps_time);
+        las::store_little_endian<std::int16_t>(record + 18, std::int16_t(std::lround((along / side - 0.5) * 20. / 0.006)));
+        las::store_little_endian<std::uint16_t>(record + 20, std::uint16_t(1 + j % 65535)); // a flight line per row of tiles
+        las::store_little_endian<double>(record + 22, gps_time);
         summary.add(record, true);
         chunk.insert(chunk.end(), record, record + RECORD_BYTES);
       }

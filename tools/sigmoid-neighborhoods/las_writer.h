@@ -9,6 +9,8 @@
 #ifndef SIGMOID_NEIGHBORHOODS_TOOL_LAS_WRITER_H
 #define SIGMOID_NEIGHBORHOODS_TOOL_LAS_WRITER_H
 
+#include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -69,36 +71,9 @@ inline std::string laz_refusal()
          "'laszip -i FILE.laz -o FILE.las' or 'pdal translate FILE.laz FILE.las'";
 }
 
-template <typename T>
-using Unsigned_of_size =
-  typename std::conditional<sizeof(T) == 8, std::uint64_t,
-    typename std::conditional<sizeof(T) == 4, std::uint32_t,
-      typename std::conditional<sizeof(T) == 2, std::uint16_t, std::uint8_t>::type>::type>::type;
-
-// Little-endian numbers at any address, whatever the machine's byte order.
-template <typename T>
-T get(const unsigned char* bytes)
-{
-  typedef Unsigned_of_size<T> Unsigned;
-  static_assert(sizeof(Unsigned) == sizeof(T) && std::is_trivially_copyable<T>::value, "a plain number");
-  Unsigned u = 0;
-  for(std::size_t i = sizeof(T); i-- > 0;)
-    u = Unsigned(Unsigned(u << 8) | Unsigned(bytes[i]));
-  T value;
-  std::memcpy(&value, &u, sizeof(T));
-  return value;
-}
-
-template <typename T>
-void put(unsigned char* bytes, T value)
-{
-  typedef Unsigned_of_size<T> Unsigned;
-  static_assert(sizeof(Unsigned) == sizeof(T) && std::is_trivially_copyable<T>::value, "a plain number");
-  Unsigned u;
-  std::memcpy(&u, &value, sizeof(T));
-  for(std::size_t i = 0; i < sizeof(T); ++i, u = Unsigned(u >> 8))
-    bytes[i] = static_cast<unsigned char>(u & 0xFF);
-}
+// Little-endian numbers at any address: the package's, as its LAS reader reads them.
+using CGAL::Sigmoid_neighborhoods::load_little_endian;
+using CGAL::Sigmoid_neighborhoods::store_little_endian;
 
 // What a header says of the point records after it, gathered as they are written.
 struct Point_summary
@@ -117,7 +92,7 @@ struct Point_summary
     ++count;
     for(int c = 0; c < 3; ++c)
     {
-      const std::int32_t v = get<std::int32_t>(record + 4 * c);
+      const std::int32_t v = load_little_endian<std::int32_t>(record + 4 * c);
       min[c] = (std::min)(min[c], v);
       max[c] = (std::max)(max[c], v);
     }
@@ -142,14 +117,14 @@ inline void write_point_summary(unsigned char* header, std::size_t header_size, 
     throw Las_format_error(std::to_string(points.count) + " points: more than a LAS 1." + std::to_string(minor) +
                            " header can count (32 bits)");
   const bool legacy = !has_64_bit_counts || (format < FIRST_EXTENDED_FORMAT && fits_legacy);
-  put<std::uint32_t>(header + LEGACY_POINT_COUNT, legacy ? std::uint32_t(points.count) : 0u);
+  store_little_endian<std::uint32_t>(header + LEGACY_POINT_COUNT, legacy ? std::uint32_t(points.count) : 0u);
   for(std::size_t r = 0; r < LEGACY_RETURNS; ++r)
-    put<std::uint32_t>(header + LEGACY_POINTS_BY_RETURN + 4 * r, legacy ? std::uint32_t(points.by_return[r]) : 0u);
+    store_little_endian<std::uint32_t>(header + LEGACY_POINTS_BY_RETURN + 4 * r, legacy ? std::uint32_t(points.by_return[r]) : 0u);
   if(has_64_bit_counts)
   {
-    put<std::uint64_t>(header + POINT_COUNT, points.count);
+    store_little_endian<std::uint64_t>(header + POINT_COUNT, points.count);
     for(std::size_t r = 0; r < RETURNS; ++r)
-      put<std::uint64_t>(header + POINTS_BY_RETURN + 8 * r, points.by_return[r]);
+      store_little_endian<std::uint64_t>(header + POINTS_BY_RETURN + 8 * r, points.by_return[r]);
   }
   // The coordinates as a reader computes them, raw * scale + offset; a negative scale swaps the ends.
   for(int c = 0; c < 3; ++c)
@@ -157,13 +132,13 @@ inline void write_point_summary(unsigned char* header, std::size_t header_size, 
     double low = 0., high = 0.;
     if(points.count != 0)
     {
-      const double scale = get<double>(header + SCALE + 8 * c), offset = get<double>(header + OFFSET + 8 * c);
+      const double scale = load_little_endian<double>(header + SCALE + 8 * c), offset = load_little_endian<double>(header + OFFSET + 8 * c);
       const double a = double(points.min[c]) * scale + offset, b = double(points.max[c]) * scale + offset;
       low = (std::min)(a, b);
       high = (std::max)(a, b);
     }
-    put<double>(header + BOUNDS + 16 * c, high);
-    put<double>(header + BOUNDS + 16 * c + 8, low);
+    store_little_endian<double>(header + BOUNDS + 16 * c, high);
+    store_little_endian<double>(header + BOUNDS + 16 * c + 8, low);
   }
 }
 
@@ -211,7 +186,7 @@ inline Las_layout read_las_layout(std::istream& in, std::uint64_t file_size)
   if(b[VERSION_MAJOR] != 1 || l.version_minor > 4)
     throw las_error("version " + std::to_string(b[VERSION_MAJOR]) + "." + std::to_string(l.version_minor) +
                     " is not read: expected 1.0 to 1.4");
-  l.header_size = get<std::uint16_t>(b + HEADER_SIZE);
+  l.header_size = load_little_endian<std::uint16_t>(b + HEADER_SIZE);
   if(l.header_size < HEADER_BYTES_1_0 || l.header_size > file_size)
     throw las_error("a header size of " + std::to_string(l.header_size) + " bytes");
   const unsigned int format_byte = b[POINT_FORMAT];
@@ -221,23 +196,23 @@ inline Las_layout read_las_layout(std::istream& in, std::uint64_t file_size)
   l.point_format = format_byte & FORMAT_BITS;
   if(l.point_format > LAST_POINT_FORMAT)
     throw las_error("point data format " + std::to_string(l.point_format) + " is not read: expected 0 to 10");
-  l.record_length = get<std::uint16_t>(b + RECORD_LENGTH);
+  l.record_length = load_little_endian<std::uint16_t>(b + RECORD_LENGTH);
   if(l.record_length < POINT_RECORD_BYTES[l.point_format])
     throw las_error("point records of " + std::to_string(l.record_length) + " bytes, less than the " +
                     std::to_string(POINT_RECORD_BYTES[l.point_format]) + " of point data format " +
                     std::to_string(l.point_format));
   const bool is_1_4 = l.version_minor == 4 && l.header_size >= HEADER_BYTES_1_4 && available >= HEADER_BYTES_1_4;
-  l.point_count = get<std::uint32_t>(b + LEGACY_POINT_COUNT);
-  if(is_1_4 && get<std::uint64_t>(b + POINT_COUNT) != 0)
-    l.point_count = get<std::uint64_t>(b + POINT_COUNT);
+  l.point_count = load_little_endian<std::uint32_t>(b + LEGACY_POINT_COUNT);
+  if(is_1_4 && load_little_endian<std::uint64_t>(b + POINT_COUNT) != 0)
+    l.point_count = load_little_endian<std::uint64_t>(b + POINT_COUNT);
   for(int c = 0; c < 3; ++c)
   {
-    l.scale[c] = get<double>(b + SCALE + 8 * c);
-    l.offset[c] = get<double>(b + OFFSET + 8 * c);
+    l.scale[c] = load_little_endian<double>(b + SCALE + 8 * c);
+    l.offset[c] = load_little_endian<double>(b + OFFSET + 8 * c);
     if(!std::isfinite(l.scale[c]) || l.scale[c] == 0. || !std::isfinite(l.offset[c]))
       throw las_error("a zero or non-finite scale factor or offset");
   }
-  l.point_data_start = get<std::uint32_t>(b + OFFSET_TO_POINT_DATA);
+  l.point_data_start = load_little_endian<std::uint32_t>(b + OFFSET_TO_POINT_DATA);
   if(l.point_data_start < l.header_size || l.point_data_start > file_size)
     throw las_error("point data at byte " + std::to_string(l.point_data_start) + ", outside the file's " +
                     std::to_string(file_size) + " bytes after its header");
@@ -249,16 +224,16 @@ inline Las_layout read_las_layout(std::istream& in, std::uint64_t file_size)
 
   // What follows the points and is copied with them; bytes between the two (padding) are dropped.
   l.trailer_start = file_size;
-  if(is_1_4 && get<std::uint32_t>(b + NUMBER_OF_EVLRS) != 0)
+  if(is_1_4 && load_little_endian<std::uint32_t>(b + NUMBER_OF_EVLRS) != 0)
   {
-    l.evlrs = get<std::uint32_t>(b + NUMBER_OF_EVLRS);
-    const std::uint64_t start = get<std::uint64_t>(b + FIRST_EVLR_START);
+    l.evlrs = load_little_endian<std::uint32_t>(b + NUMBER_OF_EVLRS);
+    const std::uint64_t start = load_little_endian<std::uint64_t>(b + FIRST_EVLR_START);
     if(start < l.point_data_end || start > file_size)
       throw las_error("the first EVLR at byte " + std::to_string(start) + ", not after the point records");
     l.trailer_start = start;
   }
-  const std::uint64_t waveforms = l.header_size >= HEADER_BYTES_1_3 ? get<std::uint64_t>(b + WAVEFORM_DATA_START) : 0;
-  if(l.version_minor >= 3 && (get<std::uint16_t>(b + GLOBAL_ENCODING) & WAVEFORM_DATA_INTERNAL) != 0 &&
+  const std::uint64_t waveforms = l.header_size >= HEADER_BYTES_1_3 ? load_little_endian<std::uint64_t>(b + WAVEFORM_DATA_START) : 0;
+  if(l.version_minor >= 3 && (load_little_endian<std::uint16_t>(b + GLOBAL_ENCODING) & WAVEFORM_DATA_INTERNAL) != 0 &&
      waveforms != 0)
   {
     if(waveforms < l.point_data_end || waveforms > file_size)
@@ -291,9 +266,9 @@ inline std::vector<unsigned char> copied_header(const Las_layout& layout, const 
   {
     if(field + 8 > header.size())
       continue;
-    const std::uint64_t at = get<std::uint64_t>(header.data() + field);
+    const std::uint64_t at = load_little_endian<std::uint64_t>(header.data() + field);
     if(at >= layout.trailer_start && at < layout.file_size)
-      put<std::uint64_t>(header.data() + field, at - layout.trailer_start + new_start);
+      store_little_endian<std::uint64_t>(header.data() + field, at - layout.trailer_start + new_start);
   }
   return header;
 }

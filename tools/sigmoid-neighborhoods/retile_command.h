@@ -442,7 +442,7 @@ inline int run_retile(int argc, char** argv, const char* usage)
       for(int c = 0; c < 2; ++c)
       {
         // The cells of compute_height_features(), shifted by the origin: floor((x - ox) / S).
-        const double coordinate = double(las::get<std::int32_t>(record + 4 * c)) * layout.scale[c] + layout.offset[c];
+        const double coordinate = double(las::load_little_endian<std::int32_t>(record + 4 * c)) * layout.scale[c] + layout.offset[c];
         const double index = std::floor((coordinate - (c == 0 ? origin_x : origin_y)) / size);
         if(!(std::abs(index) < RETILE_LARGEST_CELL_INDEX))
           throw Usage_error(input + ": point " + std::to_string(first + k) + " lies " +

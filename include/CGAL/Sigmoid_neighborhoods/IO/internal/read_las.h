@@ -6,6 +6,7 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_READ_LAS_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_READ_LAS_H
 
+#include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/Byte_budget.h>
@@ -63,23 +64,6 @@ constexpr std::size_t LAS_CHUNK_BYTES = std::size_t(1) << 22; // records read at
 
 inline std::string las_error(const std::string& reason) { return "cannot parse the file as las (" + reason + ")"; }
 
-// Little-endian numbers at any address: the bytes assembled into an unsigned integer of the size of
-// `T`, copied into `T` (two's complement integers, IEEE doubles), whatever the machine's byte order.
-template <typename T>
-T las_number(const unsigned char* bytes)
-{
-  typedef typename std::conditional<sizeof(T) == 8, std::uint64_t,
-            typename std::conditional<sizeof(T) == 4, std::uint32_t,
-              typename std::conditional<sizeof(T) == 2, std::uint16_t, std::uint8_t>::type>::type>::type Unsigned;
-  static_assert(sizeof(Unsigned) == sizeof(T) && std::is_trivially_copyable<T>::value, "a plain number");
-  Unsigned u = 0;
-  for(std::size_t i = sizeof(T); i-- > 0;)
-    u = Unsigned(Unsigned(u << 8) | Unsigned(bytes[i]));
-  T value;
-  std::memcpy(&value, &u, sizeof(T));
-  return value;
-}
-
 // What the public header block of a LAS file says, checked: the points it announces lie within the file.
 struct Las_header
 {
@@ -120,7 +104,7 @@ inline Las_header read_las_header(std::istream& in, std::uintmax_t file_size)
   if(h.version_major != 1 || h.version_minor > LAS_LAST_MINOR_VERSION)
     throw Input_error(las_error("version " + std::to_string(h.version_major) + "." + std::to_string(h.version_minor) +
                                 " is not read: expected 1.0 to 1.4"));
-  h.header_size = las_number<std::uint16_t>(b + 94);
+  h.header_size = load_little_endian<std::uint16_t>(b + 94);
   if(h.header_size < LAS_HEADER_BYTES_1_0)
     throw Input_error(las_error("a header size of " + std::to_string(h.header_size) + " bytes, less than the " +
                                 std::to_string(LAS_HEADER_BYTES_1_0) + " of every version"));
@@ -130,21 +114,21 @@ inline Las_header read_las_header(std::istream& in, std::uintmax_t file_size)
 
   const unsigned int format_byte = b[104];
   h.compressed = (format_byte & LAS_COMPRESSION_BITS) != 0;
-  h.vlr_count = las_number<std::uint32_t>(b + 100);
+  h.vlr_count = load_little_endian<std::uint32_t>(b + 100);
   h.point_format = format_byte & LAS_FORMAT_BITS;
   if(h.point_format > LAS_LAST_POINT_FORMAT)
     throw Input_error(las_error("point data format " + std::to_string(h.point_format) +
                                 " is not read: expected 0 to 10"));
-  h.record_length = las_number<std::uint16_t>(b + 105);
+  h.record_length = load_little_endian<std::uint16_t>(b + 105);
   if(h.record_length < LAS_POINT_RECORD_BYTES[h.point_format])
     throw Input_error(las_error("point records of " + std::to_string(h.record_length) + " bytes, less than the " +
                                 std::to_string(LAS_POINT_RECORD_BYTES[h.point_format]) + " of point data format " +
                                 std::to_string(h.point_format)));
 
-  h.point_count = las_number<std::uint32_t>(b + 107);
+  h.point_count = load_little_endian<std::uint32_t>(b + 107);
   if(h.version_minor == 4 && h.header_size >= LAS_HEADER_BYTES_1_4 && available >= LAS_HEADER_BYTES_1_4)
   {
-    const std::uint64_t count = las_number<std::uint64_t>(b + 247);
+    const std::uint64_t count = load_little_endian<std::uint64_t>(b + 247);
     if(count != 0)
       h.point_count = count;
   }
@@ -152,10 +136,10 @@ inline Las_header read_las_header(std::istream& in, std::uintmax_t file_size)
   const char* const axes[] = {"x", "y", "z"};
   for(int i = 0; i < 3; ++i)
   {
-    h.scale[i] = las_number<double>(b + 131 + 8 * i);
-    h.offset[i] = las_number<double>(b + 155 + 8 * i);
-    h.max[i] = las_number<double>(b + 179 + 16 * i);
-    h.min[i] = las_number<double>(b + 187 + 16 * i);
+    h.scale[i] = load_little_endian<double>(b + 131 + 8 * i);
+    h.offset[i] = load_little_endian<double>(b + 155 + 8 * i);
+    h.max[i] = load_little_endian<double>(b + 179 + 16 * i);
+    h.min[i] = load_little_endian<double>(b + 187 + 16 * i);
     if(!std::isfinite(h.scale[i]) || h.scale[i] == 0.)
       throw Input_error(las_error(std::string(h.scale[i] == 0. ? "a zero" : "a non-finite") + " scale factor of " +
                                   axes[i] + ": expected a finite number other than 0"));
@@ -163,7 +147,7 @@ inline Las_header read_las_header(std::istream& in, std::uintmax_t file_size)
       throw Input_error(las_error("a non-finite offset of " + std::string(axes[i])));
   }
 
-  h.offset_to_point_data = las_number<std::uint32_t>(b + 96);
+  h.offset_to_point_data = load_little_endian<std::uint32_t>(b + 96);
   if(h.offset_to_point_data < h.header_size)
     throw Input_error(las_error("point data at byte " + std::to_string(h.offset_to_point_data) +
                                 ", inside the header of " + std::to_string(h.header_size) + " bytes"));
@@ -286,7 +270,7 @@ void read_las(const Input_file& file, Oriented_point_set& out, Keep keep = Keep(
       double xyz[3];
       for(int c = 0; c < 3; ++c)
       {
-        xyz[c] = double(las_number<std::int32_t>(r + 4 * c)) * h.scale[c] + h.offset[c];
+        xyz[c] = double(load_little_endian<std::int32_t>(r + 4 * c)) * h.scale[c] + h.offset[c];
         if(!std::isfinite(xyz[c]))
           throw Input_error(las_error("point " + std::to_string(first + i) +
                                       " has a non-finite coordinate after scale and offset"));
@@ -294,7 +278,7 @@ void read_las(const Input_file& file, Oriented_point_set& out, Keep keep = Keep(
       if(!keep(first + i, xyz))
         continue;
       out.points.emplace_back(xyz[0], xyz[1], xyz[2]);
-      out.intensities.push_back(las_number<std::uint16_t>(r + 12));
+      out.intensities.push_back(load_little_endian<std::uint16_t>(r + 12));
       const unsigned int returns = r[14];
       if(h.has_extended_format())
       {
@@ -309,7 +293,7 @@ void read_las(const Input_file& file, Oriented_point_set& out, Keep keep = Keep(
         out.labels.push_back(int(r[15] & 0x1F));
       }
       if(h.has_gps_time())
-        out.gps_times.push_back(las_number<double>(r + h.gps_time_offset()));
+        out.gps_times.push_back(load_little_endian<double>(r + h.gps_time_offset()));
     }
   });
 }

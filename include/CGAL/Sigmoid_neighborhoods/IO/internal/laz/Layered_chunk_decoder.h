@@ -6,6 +6,7 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_LAYERED_CHUNK_DECODER_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_LAYERED_CHUNK_DECODER_H
 
+#include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_decoder.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/laz_items.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/point14_items.h>
@@ -49,7 +50,7 @@ public:
     m_active = {false, false, false, false};
     std::array<std::uint16_t, 4> values{};
     for(std::size_t i = 0; i < (m_nir ? 4u : 3u); ++i)
-      values[i] = load_le16(first + 2 * i);
+      values[i] = load_little_endian<std::uint16_t>(first + 2 * i);
     m_current = channel;
     activate(channel, values);
   }
@@ -113,7 +114,7 @@ public:
         last[i] = std::uint16_t(lo[i] | (hi[i] << 8));
     }
     for(std::size_t i = 0; i < 3; ++i)
-      store_le16(out + 2 * i, last[i]);
+      store_little_endian<std::uint16_t>(out + 2 * i, last[i]);
 
     if(m_nir)
     {
@@ -126,7 +127,7 @@ public:
                                        : last[3] >> 8;
         last[3] = std::uint16_t(lo | (hi << 8));
       }
-      store_le16(out + 6, last[3]);
+      store_little_endian<std::uint16_t>(out + 6, last[3]);
     }
   }
 
@@ -328,7 +329,7 @@ public:
                          std::to_string(m_record_length) + " bytes) and its point count");
     std::memcpy(out, begin, m_record_length);
     const unsigned char* at = begin + m_record_length;
-    const std::uint32_t stored = load_le32(at);
+    const std::uint32_t stored = load_little_endian<std::uint32_t>(at);
     at += 4;
     if(stored != count)
       throw Decode_error("the chunk says it holds " + std::to_string(stored) + " points, the chunk table " +
@@ -340,7 +341,7 @@ public:
     const unsigned char* data = at + 4 * layer_count;
     for(std::size_t l = 0; l < layer_count; ++l)
     {
-      const std::uint32_t size = load_le32(at + 4 * l);
+      const std::uint32_t size = load_little_endian<std::uint32_t>(at + 4 * l);
       const std::size_t left = std::size_t(end - data);
       if(size > left)
         throw Decode_error("a layer size that overruns the chunk: the " + m_layer_names[l] + " layer of " +

@@ -6,6 +6,7 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_LAZ_LAYOUT_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_LAZ_LAYOUT_H
 
+#include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_decoder.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/integer_decompressor.h>
@@ -58,14 +59,6 @@ struct Layout
   std::size_t chunk_count() const { return chunk_starts.empty() ? 0 : chunk_starts.size() - 1; }
 };
 
-inline std::uint64_t le_number(const unsigned char* b, int bytes)
-{
-  std::uint64_t v = 0;
-  for(int i = bytes; i-- > 0;)
-    v = (v << 8) | b[i];
-  return v;
-}
-
 inline std::string laz_error(const std::string& reason) { return "cannot decode the file as laz (" + reason + ")"; }
 
 inline void read_exactly(std::istream& in, std::uint64_t offset, unsigned char* out, std::size_t n, const char* what)
@@ -88,8 +81,8 @@ inline Layout read_laszip_record(std::istream& in, std::uint32_t header_size, st
     if(at + VLR_HEADER_BYTES > offset_to_point_data)
       break; // records that overrun the point data are not records; the LASzip one is then missing
     read_exactly(in, at, h, VLR_HEADER_BYTES, "a variable-length record");
-    const std::uint16_t record_id = std::uint16_t(le_number(h + 18, 2));
-    const std::uint16_t length = std::uint16_t(le_number(h + 20, 2));
+    const std::uint16_t record_id = std::uint16_t(load_little_endian(h + 18, 2));
+    const std::uint16_t length = std::uint16_t(load_little_endian(h + 20, 2));
     const bool laszip = record_id == LASZIP_RECORD_ID && std::strncmp(reinterpret_cast<const char*>(h + 2),
                                                                      "laszip encoded", 16) == 0;
     if(laszip)
@@ -100,9 +93,9 @@ inline Layout read_laszip_record(std::istream& in, std::uint32_t header_size, st
       std::vector<unsigned char> d(length);
       read_exactly(in, at + VLR_HEADER_BYTES, d.data(), length, "the LASzip record");
       Layout layout;
-      const std::uint16_t compressor = std::uint16_t(le_number(d.data(), 2));
-      layout.chunk_size = std::uint32_t(le_number(d.data() + 12, 4));
-      const std::size_t item_count = std::size_t(le_number(d.data() + 32, 2));
+      const std::uint16_t compressor = std::uint16_t(load_little_endian(d.data(), 2));
+      layout.chunk_size = std::uint32_t(load_little_endian(d.data() + 12, 4));
+      const std::size_t item_count = std::size_t(load_little_endian(d.data() + 32, 2));
       if(34 + 6 * item_count > length)
         throw Input_error(laz_error("its LASzip record lists " + std::to_string(item_count) +
                                     " items in " + std::to_string(length) + " bytes"));
@@ -110,9 +103,9 @@ inline Layout read_laszip_record(std::istream& in, std::uint32_t header_size, st
       for(std::size_t i = 0; i < item_count; ++i)
       {
         Item item;
-        item.type = std::uint16_t(le_number(d.data() + 34 + 6 * i, 2));
-        item.size = std::uint16_t(le_number(d.data() + 36 + 6 * i, 2));
-        item.version = std::uint16_t(le_number(d.data() + 38 + 6 * i, 2));
+        item.type = std::uint16_t(load_little_endian(d.data() + 34 + 6 * i, 2));
+        item.size = std::uint16_t(load_little_endian(d.data() + 36 + 6 * i, 2));
+        item.version = std::uint16_t(load_little_endian(d.data() + 38 + 6 * i, 2));
         sum += item.size;
         layout.items.push_back(item);
       }
@@ -145,13 +138,13 @@ inline void read_chunk_table(std::istream& in, std::uint64_t file_size, std::uin
     throw Input_error(laz_error("the file ends before the offset of its chunk table"));
   unsigned char b[8];
   read_exactly(in, offset_to_point_data, b, 8, "the offset of the chunk table");
-  std::uint64_t table = le_number(b, 8);
+  std::uint64_t table = load_little_endian(b, 8);
   if(table == (std::numeric_limits<std::uint64_t>::max)()) // written last, by a writer that could not seek back
   {
     if(file_size < first_chunk + 8)
       throw Input_error(laz_error("the file ends before the offset of its chunk table"));
     read_exactly(in, file_size - 8, b, 8, "the offset of the chunk table at the end of the file");
-    table = le_number(b, 8);
+    table = load_little_endian(b, 8);
   }
   if(table == offset_to_point_data)
     throw Input_error(laz_error("no chunk table: its writer stopped before writing it"));
@@ -162,8 +155,8 @@ inline void read_chunk_table(std::istream& in, std::uint64_t file_size, std::uin
     throw Input_error(laz_error("a chunk table at byte " + std::to_string(table) + ", past the end of a file of " +
                                 std::to_string(file_size) + " bytes"));
   read_exactly(in, table, b, 8, "the chunk table");
-  const std::uint32_t version = std::uint32_t(le_number(b, 4));
-  const std::uint64_t chunks = le_number(b + 4, 4);
+  const std::uint32_t version = std::uint32_t(load_little_endian(b, 4));
+  const std::uint64_t chunks = load_little_endian(b + 4, 4);
   if(version != 0)
     throw Input_error(laz_error("chunk table version " + std::to_string(version) + ", expected 0"));
   const bool variable = layout.chunk_size == VARIABLE_CHUNK_SIZE;

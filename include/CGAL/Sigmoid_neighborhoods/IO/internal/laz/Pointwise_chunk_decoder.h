@@ -6,6 +6,7 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_POINTWISE_CHUNK_DECODER_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_POINTWISE_CHUNK_DECODER_H
 
+#include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_decoder.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/integer_decompressor.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/laz_items.h>
@@ -29,20 +30,6 @@ namespace laz {
 // before and codes what differs, all items sharing one arithmetic coder, record after record.
 
 namespace pointwise {
-
-inline std::uint32_t get_le(const unsigned char* b, int bytes)
-{
-  std::uint32_t v = 0;
-  for(int i = bytes; i-- > 0;)
-    v = (v << 8) | b[i];
-  return v;
-}
-
-inline void put_le(unsigned char* b, std::uint64_t v, int bytes)
-{
-  for(int i = 0; i < bytes; ++i, v >>= 8)
-    b[i] = static_cast<unsigned char>(v);
-}
 
 // The middle of the last five values, kept sorted. Each new value pushes out the largest or the
 // smallest, alternately unless it lands on the side just pushed from: the median follows a drifting
@@ -147,15 +134,15 @@ public:
     m_dx.init();
     m_dy.init();
     m_dz.init();
-    m_x = std::int32_t(get_le(raw, 4));
-    m_y = std::int32_t(get_le(raw + 4, 4));
-    m_z = std::int32_t(get_le(raw + 8, 4));
+    m_x = load_little_endian<std::int32_t>(raw);
+    m_y = load_little_endian<std::int32_t>(raw + 4);
+    m_z = load_little_endian<std::int32_t>(raw + 8);
     m_intensity = 0; // the encoder's reference record has it cleared
     m_returns = raw[14];
     m_class = raw[15];
     m_scan = raw[16];
     m_user = raw[17];
-    m_source = std::uint16_t(get_le(raw + 18, 2));
+    m_source = load_little_endian<std::uint16_t>(raw + 18);
   }
 
   void decode(unsigned char* out)
@@ -196,15 +183,15 @@ public:
     k = (m_dx.k() + m_dy.k()) / 2;
     m_z = m_last_z[level] = m_dz.decompress(m_last_z[level], single + (k < 18 ? k & ~1u : 18));
 
-    put_le(out, std::uint32_t(m_x), 4);
-    put_le(out + 4, std::uint32_t(m_y), 4);
-    put_le(out + 8, std::uint32_t(m_z), 4);
-    put_le(out + 12, m_intensity, 2);
+    store_little_endian<std::int32_t>(out, m_x);
+    store_little_endian<std::int32_t>(out + 4, m_y);
+    store_little_endian<std::int32_t>(out + 8, m_z);
+    store_little_endian<std::uint16_t>(out + 12, m_intensity);
     out[14] = m_returns;
     out[15] = m_class;
     out[16] = m_scan;
     out[17] = m_user;
-    put_le(out + 18, m_source, 2);
+    store_little_endian<std::uint16_t>(out + 18, m_source);
   }
 
 private:
@@ -243,7 +230,7 @@ public:
       m_step[i] = 0;
       m_off_step[i] = 0;
     }
-    m_time[0] = std::uint64_t(get_le(raw, 4)) | (std::uint64_t(get_le(raw + 4, 4)) << 32);
+    m_time[0] = load_little_endian<std::uint64_t>(raw);
     m_multiple.init();
     m_after_zero.init();
     m_ic.init();
@@ -322,7 +309,7 @@ public:
       }
       break;
     }
-    put_le(out, m_time[m_current], 8);
+    store_little_endian<std::uint64_t>(out, m_time[m_current]);
   }
 
 private:

@@ -6,6 +6,7 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_POINT14_ITEMS_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_POINT14_ITEMS_H
 
+#include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_decoder.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/integer_decompressor.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/laz_items.h>
@@ -35,28 +36,6 @@ struct Layer_bytes
   const unsigned char* end = nullptr;
   bool empty() const { return begin == end; }
 };
-
-inline std::uint16_t load_le16(const unsigned char* b) { return std::uint16_t(b[0] | (b[1] << 8)); }
-inline std::uint32_t load_le32(const unsigned char* b)
-{
-  return std::uint32_t(b[0]) | (std::uint32_t(b[1]) << 8) | (std::uint32_t(b[2]) << 16) | (std::uint32_t(b[3]) << 24);
-}
-inline std::uint64_t load_le64(const unsigned char* b) { return load_le32(b) | (std::uint64_t(load_le32(b + 4)) << 32); }
-inline void store_le16(unsigned char* b, std::uint16_t v)
-{
-  b[0] = static_cast<unsigned char>(v);
-  b[1] = static_cast<unsigned char>(v >> 8);
-}
-inline void store_le32(unsigned char* b, std::uint32_t v)
-{
-  for(int i = 0; i < 4; ++i)
-    b[i] = static_cast<unsigned char>(v >> (8 * i));
-}
-inline void store_le64(unsigned char* b, std::uint64_t v)
-{
-  store_le32(b, std::uint32_t(v));
-  store_le32(b + 4, std::uint32_t(v >> 32));
-}
 
 // N symbol models of `Symbols` symbols that a chunk's channel starts fresh. LASzip creates some of
 // them only when a context first occurs; a model is therefore (re)initialised on its first use after
@@ -188,33 +167,33 @@ struct Point14_record
 
   void read(const unsigned char* b)
   {
-    x = load_le32(b);
-    y = load_le32(b + 4);
-    z = load_le32(b + 8);
-    intensity = load_le16(b + 12);
+    x = load_little_endian<std::uint32_t>(b);
+    y = load_little_endian<std::uint32_t>(b + 4);
+    z = load_little_endian<std::uint32_t>(b + 8);
+    intensity = load_little_endian<std::uint16_t>(b + 12);
     returns = b[14];
     flags = b[15];
     classification = b[16];
     user_data = b[17];
-    scan_angle = load_le16(b + 18);
-    point_source = load_le16(b + 20);
-    gps_time = load_le64(b + 22);
+    scan_angle = load_little_endian<std::uint16_t>(b + 18);
+    point_source = load_little_endian<std::uint16_t>(b + 20);
+    gps_time = load_little_endian<std::uint64_t>(b + 22);
     gps_time_changed = false;
   }
 
   void write(unsigned char* b) const
   {
-    store_le32(b, x);
-    store_le32(b + 4, y);
-    store_le32(b + 8, z);
-    store_le16(b + 12, intensity);
+    store_little_endian<std::uint32_t>(b, x);
+    store_little_endian<std::uint32_t>(b + 4, y);
+    store_little_endian<std::uint32_t>(b + 8, z);
+    store_little_endian<std::uint16_t>(b + 12, intensity);
     b[14] = returns;
     b[15] = flags;
     b[16] = classification;
     b[17] = user_data;
-    store_le16(b + 18, scan_angle);
-    store_le16(b + 20, point_source);
-    store_le64(b + 22, gps_time);
+    store_little_endian<std::uint16_t>(b + 18, scan_angle);
+    store_little_endian<std::uint16_t>(b + 20, point_source);
+    store_little_endian<std::uint64_t>(b + 22, gps_time);
   }
 
   unsigned return_number() const { return returns & 15u; }
