@@ -469,7 +469,7 @@ TEST_CASE("Ethz_forest::train: CGAL's Random_forest_classifier::train() bit for 
   rows.pop_back();
   CHECK_THROWS_AS(SN::Classification::Ethz_forest::train<CGAL::Sequential_tag>(rows, row_labels, 3, 7, 9),
                   std::invalid_argument);
-  CHECK_THROWS_AS(SN::Classification::Ethz_forest::train<CGAL::Sequential_tag>({}, {}, 3, 7, 9), std::invalid_argument);
+  CHECK_THROWS_AS(SN::Classification::Ethz_forest::train<CGAL::Sequential_tag>(std::vector<float>(), {}, 3, 7, 9), std::invalid_argument);
 }
 
 TEST_CASE("the groups cgal, cgal-metric and cgal-grid: CGAL's generator bit for bit, on any thread count",

@@ -35,6 +35,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sigmoid_tool {
@@ -149,11 +150,38 @@ void cap_points_per_class(std::vector<int>& truth, std::size_t classes, std::siz
   }
 }
 
+// An allocator whose resize() leaves the values uninitialised: the rows are written once, on every
+// thread, so that their pages are first touched by the threads that fill them, not zeroed by one.
+template <typename T>
+struct Uninitialized_allocator : std::allocator<T>
+{
+  template <typename U>
+  struct rebind
+  {
+    typedef Uninitialized_allocator<U> other;
+  };
+  Uninitialized_allocator() = default;
+  template <typename U>
+  Uninitialized_allocator(const Uninitialized_allocator<U>&) noexcept
+  {
+  }
+  template <typename U>
+  void construct(U* p) noexcept
+  {
+    ::new(static_cast<void*>(p)) U;
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args)
+  {
+    ::new(static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
 // The training points' features, row-major in the forest's order, as CGAL's forest reads them
 // (Feature_values::stored_value()), and their classes.
 struct Training_rows
 {
-  std::vector<float> values;
+  std::vector<float, Uninitialized_allocator<float>> values;
   std::vector<int> labels;
 };
 
@@ -193,17 +221,24 @@ void append_training_rows(const std::vector<Feature_column>& columns, const std:
   const std::size_t first = rows.labels.size(), width = names.size();
   rows.labels.resize(first + points.size());
   rows.values.resize((first + points.size()) * width);
-  const std::ptrdiff_t count = std::ptrdiff_t(points.size());
+  // in blocks of rows, a column at a time: each column read in order, the block's rows in the cache
+  const std::size_t block = 256;
+  const std::ptrdiff_t blocks = std::ptrdiff_t((points.size() + block - 1) / block);
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) num_threads(threads == 0 ? omp_get_max_threads() : int(threads))
 #endif
-  for(std::ptrdiff_t r = 0; r < count; ++r)
+  for(std::ptrdiff_t b = 0; b < blocks; ++b)
   {
-    const std::size_t i = points[std::size_t(r)];
-    float* row = rows.values.data() + (first + std::size_t(r)) * width;
+    const std::size_t begin = std::size_t(b) * block, end = std::min(points.size(), begin + block);
     for(std::size_t f = 0; f < width; ++f)
-      row[f] = SN::Classification::Feature_values::stored_value((*ordered[f])[i]);
-    rows.labels[first + std::size_t(r)] = truth[i];
+    {
+      const std::vector<double>& column = *ordered[f];
+      float* value = rows.values.data() + (first + begin) * width + f;
+      for(std::size_t r = begin; r < end; ++r, value += width)
+        *value = SN::Classification::Feature_values::stored_value(column[points[r]]);
+    }
+    for(std::size_t r = begin; r < end; ++r)
+      rows.labels[first + r] = truth[points[r]];
   }
   (void)threads;
 }
@@ -246,14 +281,26 @@ void train(const std::vector<Featured_file>& files, Trained& t)
 
 std::size_t train_file_by_file(const std::vector<std::string>& paths, Trained& t, Phase_times& times)
 {
-  // the labels first: they size the rows and choose the training points
+  // the labels first: they size the rows and choose the training points. Read without normals (the
+  // same points: duplicates merge on their positions), unless the file's own normals refuse that (a
+  // few zero normals need estimating): then as the features read it.
+  SN::Normal_options without_normals;
+  without_normals.neighbors = 0;
+  without_normals.threads = t.settings.normals.threads;
   std::vector<std::vector<int>> truth;
   for(const std::string& path : paths)
   {
     progress(path + ": reading the labels");
     Featured_file f;
     f.path = path;
-    f.model = read_input(path, [&] { return read_model(path, 0, t.settings.normals); });
+    try
+    {
+      f.model = SN::read_oriented_point_set(path, without_normals);
+    }
+    catch(const SN::Input_error&)
+    {
+      f.model = read_input(path, [&] { return read_model(path, 0, t.settings.normals); });
+    }
     add_features(f, t.settings.labels, true, t.settings.features, false);
     truth.push_back(std::move(f.truth));
   }

@@ -140,6 +140,8 @@ public:
     caller's matrix is read in place and the trees are trained on the package's parallel loop, each
     from its own seed as CGAL seeds it.
     \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag`
+    \tparam FeatureRange a contiguous range of `float` with `data()` and `size()` (`std::vector<float>`,
+    with any allocator)
     \param features row-major, `features[i * f + j]` the feature `j` of item `i`, `f` the number of
     features, as `Feature_values` stores them (`Feature_values::stored_value()`)
     \param labels the label of each item, in [0, `number_of_labels`)
@@ -149,8 +151,8 @@ public:
     \param np optional: `number_of_threads` (0, the default: all)
     \pre `labels` is not empty, `features.size()` is a multiple of `labels.size()`
   */
-  template <typename ConcurrencyTag, typename CGAL_NP_TEMPLATE_PARAMETERS>
-  static Ethz_forest train(const std::vector<float>& features, const std::vector<int>& labels,
+  template <typename ConcurrencyTag, typename FeatureRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
+  static Ethz_forest train(const FeatureRange& features, const std::vector<int>& labels,
                            std::size_t number_of_labels, std::size_t num_trees, std::size_t max_depth,
                            const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
   {

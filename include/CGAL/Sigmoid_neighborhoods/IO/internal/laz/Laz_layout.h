@@ -189,17 +189,17 @@ inline void read_chunk_table(std::istream& in, std::uint64_t file_size, std::uin
   {
     Arithmetic_decoder decoder;
     decoder.init(coded.data(), coded.data() + coded.size());
-    Integer_decompressor sizes(decoder, 32, 2);
+    Integer_decompressor sizes(32, 2);
     sizes.init();
     std::uint32_t last_points = 0, last_bytes = 0;
     for(std::uint64_t c = 0; c < chunks; ++c)
     {
       std::uint64_t points = 0;
       if(variable)
-        points = last_points = std::uint32_t(sizes.decompress(std::int32_t(last_points), 0));
+        points = last_points = std::uint32_t(sizes.decompress(decoder, std::int32_t(last_points), 0));
       else
         points = (std::min<std::uint64_t>)(layout.chunk_size, point_count - c * layout.chunk_size);
-      const std::uint64_t bytes = last_bytes = std::uint32_t(sizes.decompress(std::int32_t(last_bytes), 1));
+      const std::uint64_t bytes = last_bytes = std::uint32_t(sizes.decompress(decoder, std::int32_t(last_bytes), 1));
       const std::uint64_t start = layout.chunk_starts.back();
       const std::string chunk = "chunk " + std::to_string(c) + " of " + std::to_string(chunks);
       if(bytes < record_length || bytes > table - start)

@@ -109,8 +109,8 @@ public:
   static constexpr std::size_t SIZE = 20;
 
   explicit Point10_decoder(Arithmetic_decoder& d)
-    : m_decoder(d), m_changed(64), m_intensity_ic(d, 16, 4), m_source_ic(d, 16), m_scan_angle{{Arithmetic_model(256), Arithmetic_model(256)}},
-      m_dx(d, 32, 2), m_dy(d, 32, 22), m_dz(d, 32, 20)
+    : m_decoder(d), m_changed(64), m_intensity_ic(16, 4), m_source_ic(16), m_scan_angle{{Arithmetic_model(256), Arithmetic_model(256)}},
+      m_dx(32, 2), m_dy(32, 22), m_dz(32, 20)
   {}
 
   void init(const unsigned char* raw)
@@ -158,7 +158,7 @@ public:
     if(changed != 0)
     {
       if(changed & 16)
-        m_last_intensity[m] = std::uint16_t(m_intensity_ic.decompress(m_last_intensity[m], m < 3 ? m : 3));
+        m_last_intensity[m] = std::uint16_t(m_intensity_ic.decompress(m_decoder, m_last_intensity[m], m < 3 ? m : 3));
       m_intensity = m_last_intensity[m];
       if(changed & 8)
         m_class = std::uint8_t(m_decoder.decode_symbol(m_class_models[m_class]));
@@ -167,21 +167,21 @@ public:
       if(changed & 2)
         m_user = std::uint8_t(m_decoder.decode_symbol(m_user_models[m_user]));
       if(changed & 1)
-        m_source = std::uint16_t(m_source_ic.decompress(m_source));
+        m_source = std::uint16_t(m_source_ic.decompress(m_decoder, m_source));
     }
 
     const std::uint32_t single = n == 1 ? 1 : 0;
-    std::int32_t diff = m_dx.decompress(m_x_median[m].get(), single);
+    std::int32_t diff = m_dx.decompress(m_decoder, m_x_median[m].get(), single);
     m_x = std::int32_t(std::uint32_t(m_x) + std::uint32_t(diff));
     m_x_median[m].add(diff);
 
     std::uint32_t k = m_dx.k();
-    diff = m_dy.decompress(m_y_median[m].get(), single + (k < 20 ? k & ~1u : 20));
+    diff = m_dy.decompress(m_decoder, m_y_median[m].get(), single + (k < 20 ? k & ~1u : 20));
     m_y = std::int32_t(std::uint32_t(m_y) + std::uint32_t(diff));
     m_y_median[m].add(diff);
 
     k = (m_dx.k() + m_dy.k()) / 2;
-    m_z = m_last_z[level] = m_dz.decompress(m_last_z[level], single + (k < 18 ? k & ~1u : 18));
+    m_z = m_last_z[level] = m_dz.decompress(m_decoder, m_last_z[level], single + (k < 18 ? k & ~1u : 18));
 
     store_little_endian<std::int32_t>(out, m_x);
     store_little_endian<std::int32_t>(out + 4, m_y);
@@ -218,7 +218,7 @@ public:
   static constexpr std::size_t SIZE = 8;
 
   explicit Gps_time11_decoder(Arithmetic_decoder& d)
-    : m_decoder(d), m_multiple(MULTIPLE_SYMBOLS), m_after_zero(6), m_ic(d, 32, 9)
+    : m_decoder(d), m_multiple(MULTIPLE_SYMBOLS), m_after_zero(6), m_ic(32, 9)
   {}
 
   void init(const unsigned char* raw)
@@ -248,7 +248,7 @@ public:
         const std::uint32_t s = m_decoder.decode_symbol(m_after_zero);
         if(s == 1)
         {
-          m_step[m_current] = m_ic.decompress(0, 0);
+          m_step[m_current] = m_ic.decompress(m_decoder, 0, 0);
           m_time[m_current] += std::uint64_t(std::int64_t(m_step[m_current]));
           m_off_step[m_current] = 0;
         }
@@ -268,7 +268,7 @@ public:
         const std::uint32_t step = std::uint32_t(m_step[m_current]);
         if(s == 1)
         {
-          m_time[m_current] += std::uint64_t(std::int64_t(m_ic.decompress(std::int32_t(step), 1)));
+          m_time[m_current] += std::uint64_t(std::int64_t(m_ic.decompress(m_decoder, std::int32_t(step), 1)));
           m_off_step[m_current] = 0;
         }
         else if(s < UNCHANGED)
@@ -276,24 +276,24 @@ public:
           std::int32_t diff;
           if(s == 0)
           {
-            diff = m_ic.decompress(0, 7);
+            diff = m_ic.decompress(m_decoder, 0, 7);
             count_off_step(diff);
           }
           else if(s < MULTIPLE)
-            diff = m_ic.decompress(std::int32_t(s * step), s < 10 ? 2 : 3);
+            diff = m_ic.decompress(m_decoder, std::int32_t(s * step), s < 10 ? 2 : 3);
           else if(s == MULTIPLE)
           {
-            diff = m_ic.decompress(std::int32_t(MULTIPLE * step), 4);
+            diff = m_ic.decompress(m_decoder, std::int32_t(MULTIPLE * step), 4);
             count_off_step(diff);
           }
           else
           {
             const std::int32_t back = std::int32_t(MULTIPLE) - std::int32_t(s); // -1 to -10
             if(back > MULTIPLE_MINUS)
-              diff = m_ic.decompress(std::int32_t(std::uint32_t(back) * step), 5);
+              diff = m_ic.decompress(m_decoder, std::int32_t(std::uint32_t(back) * step), 5);
             else
             {
-              diff = m_ic.decompress(std::int32_t(std::uint32_t(MULTIPLE_MINUS) * step), 6);
+              diff = m_ic.decompress(m_decoder, std::int32_t(std::uint32_t(MULTIPLE_MINUS) * step), 6);
               count_off_step(diff);
             }
           }
@@ -324,7 +324,7 @@ private:
   void start_series()
   {
     m_newest = (m_newest + 1) & 3u;
-    const std::uint32_t high = std::uint32_t(m_ic.decompress(std::int32_t(m_time[m_current] >> 32), 8));
+    const std::uint32_t high = std::uint32_t(m_ic.decompress(m_decoder, std::int32_t(m_time[m_current] >> 32), 8));
     m_time[m_newest] = (std::uint64_t(high) << 32) | m_decoder.read_int();
     m_current = m_newest;
     m_step[m_current] = 0;

@@ -23,13 +23,14 @@ namespace laz {
 // The corrector's magnitude class k (it lies in [-(2^k - 1), 2^k], k = 0 meaning 0 or 1) is a symbol
 // of a per-context model; its position within the class is a symbol of a per-k model, or for
 // k > bits_high the top bits_high bits a symbol and the rest raw bits. Numbers wrap modulo the
-// range (2^bits, or `range` when given), as the encoder folded them.
+// range (2^bits, or `range` when given), as the encoder folded them. It holds models alone: the
+// arithmetic decoder of its stream comes with each call, as LASzip's and laz-perf's encoders take it.
 class Integer_decompressor
 {
 public:
-  explicit Integer_decompressor(Arithmetic_decoder& decoder, std::uint32_t bits = 16, std::uint32_t contexts = 1,
-                                std::uint32_t bits_high = 8, std::uint32_t range = 0)
-    : m_decoder(&decoder), m_bits_high(bits_high)
+  explicit Integer_decompressor(std::uint32_t bits = 16, std::uint32_t contexts = 1, std::uint32_t bits_high = 8,
+                                std::uint32_t range = 0)
+    : m_bits_high(bits_high)
   {
     CGAL_precondition(contexts >= 1 && bits_high >= 1 && bits_high <= 11);
     if(range != 0)
@@ -77,10 +78,10 @@ public:
   // The number coded against `prediction`. With 2^bits (bits < 32) as the range and a prediction in
   // [0, 2^bits), it lies in [0, 2^bits) whatever the bytes; with a `range` given, only valid bytes
   // keep it in [0, range) (LASzip folds once).
-  std::int32_t decompress(std::int32_t prediction, std::uint32_t context = 0)
+  std::int32_t decompress(Arithmetic_decoder& decoder, std::int32_t prediction, std::uint32_t context = 0)
   {
     CGAL_precondition(context < m_k_models.size());
-    std::uint32_t real = std::uint32_t(prediction) + std::uint32_t(read_corrector(m_k_models[context]));
+    std::uint32_t real = std::uint32_t(prediction) + std::uint32_t(read_corrector(decoder, m_k_models[context]));
     // Back into [0, range): the encoder folded the corrector so that this wraps at most once.
     if(std::int32_t(real) < 0)
       real += m_range;
@@ -93,22 +94,22 @@ public:
   std::uint32_t k() const { return m_k; }
 
 private:
-  std::int32_t read_corrector(Arithmetic_model& k_model)
+  std::int32_t read_corrector(Arithmetic_decoder& decoder, Arithmetic_model& k_model)
   {
-    const std::uint32_t k = m_k = m_decoder->decode_symbol(k_model); // <= corrector bits
+    const std::uint32_t k = m_k = decoder.decode_symbol(k_model); // <= corrector bits
     if(k == 0)
-      return std::int32_t(m_decoder->decode_bit(m_low_bit));
+      return std::int32_t(decoder.decode_bit(m_low_bit));
     if(k >= 32)
       return m_min_corrector;
     Arithmetic_model& position = m_position_models[k - 1];
     std::uint32_t c;
     if(k <= m_bits_high)
-      c = m_decoder->decode_symbol(position);
+      c = decoder.decode_symbol(position);
     else
     {
       const std::uint32_t raw = k - m_bits_high;
-      c = m_decoder->decode_symbol(position) << raw;
-      c |= m_decoder->read_bits(raw);
+      c = decoder.decode_symbol(position) << raw;
+      c |= decoder.read_bits(raw);
     }
     // c in [0, 2^k): the upper half stands for [2^(k-1) + 1, 2^k], the lower for [-(2^k - 1), -2^(k-1)].
     if(c >= (1u << (k - 1)))
@@ -116,7 +117,6 @@ private:
     return std::int32_t(c - ((1u << k) - 1));
   }
 
-  Arithmetic_decoder* m_decoder;
   std::uint32_t m_bits_high;
   std::uint32_t m_corrector_bits = 0, m_range = 0;
   std::int32_t m_min_corrector = 0;

@@ -252,7 +252,7 @@ public:
   }
 
   Point14_decoder() = default;
-  Point14_decoder(const Point14_decoder&) = delete; // the channels' decompressors refer to m_decoders
+  Point14_decoder(const Point14_decoder&) = delete; // the decoders hold positions in the layers
   Point14_decoder& operator=(const Point14_decoder&) = delete;
 
   // Starts a chunk from its first point (raw) and its nine layers; returns the first point's channel.
@@ -326,18 +326,18 @@ public:
     const unsigned single = n == 1 ? 1u : 0u;
 
     const unsigned xy_slot = (m << 1) | (gps_changed ? 1u : 0u);
-    std::int32_t diff = ch->dx.decompress(ch->x_median[xy_slot].get(), single);
+    std::int32_t diff = ch->dx.decompress(m_decoders[XY_LAYER], ch->x_median[xy_slot].get(), single);
     last->x += std::uint32_t(diff);
     ch->x_median[xy_slot].add(diff);
     unsigned k = ch->dx.k();
-    diff = ch->dy.decompress(ch->y_median[xy_slot].get(), single + (k < 20 ? (k & ~1u) : 20u));
+    diff = ch->dy.decompress(m_decoders[XY_LAYER], ch->y_median[xy_slot].get(), single + (k < 20 ? (k & ~1u) : 20u));
     last->y += std::uint32_t(diff);
     ch->y_median[xy_slot].add(diff);
 
     if(m_has[Z_LAYER])
     {
       k = (ch->dx.k() + ch->dy.k()) / 2;
-      const std::int32_t z = ch->z.decompress(ch->last_z[level], single + (k < 18 ? (k & ~1u) : 18u));
+      const std::int32_t z = ch->z.decompress(m_decoders[Z_LAYER], ch->last_z[level], single + (k < 18 ? (k & ~1u) : 18u));
       last->z = std::uint32_t(z);
       ch->last_z[level] = z;
     }
@@ -357,17 +357,17 @@ public:
     if(m_has[INTENSITY_LAYER])
     {
       const unsigned slot = (cpr << 1) | (gps_changed ? 1u : 0u);
-      const std::uint16_t v = std::uint16_t(ch->intensity.decompress(ch->last_intensity[slot], cpr));
+      const std::uint16_t v = std::uint16_t(ch->intensity.decompress(m_decoders[INTENSITY_LAYER], ch->last_intensity[slot], cpr));
       ch->last_intensity[slot] = v;
       last->intensity = v;
     }
     if(m_has[SCAN_ANGLE_LAYER] && scan_angle_changed)
       last->scan_angle = std::uint16_t(
-        ch->scan_angle.decompress(std::int16_t(last->scan_angle), gps_changed ? 1u : 0u)); // signed, as coded
+        ch->scan_angle.decompress(m_decoders[SCAN_ANGLE_LAYER], std::int16_t(last->scan_angle), gps_changed ? 1u : 0u)); // signed, as coded
     if(m_has[USER_DATA_LAYER])
       last->user_data = std::uint8_t(m_decoders[USER_DATA_LAYER].decode_symbol(ch->user_data[last->user_data >> 2]));
     if(m_has[POINT_SOURCE_LAYER] && point_source_changed)
-      last->point_source = std::uint16_t(ch->point_source.decompress(last->point_source));
+      last->point_source = std::uint16_t(ch->point_source.decompress(m_decoders[POINT_SOURCE_LAYER], last->point_source));
     if(m_has[GPS_TIME_LAYER] && gps_changed)
     {
       decode_gps_time(*ch);
@@ -388,11 +388,7 @@ private:
 
   struct Channel
   {
-    explicit Channel(Arithmetic_decoder* d)
-      : dx(d[XY_LAYER], 32, 2), dy(d[XY_LAYER], 32, 22), z(d[Z_LAYER], 32, 20), intensity(d[INTENSITY_LAYER], 16, 4),
-        scan_angle(d[SCAN_ANGLE_LAYER], 16, 2), point_source(d[POINT_SOURCE_LAYER], 16),
-        gps(d[GPS_TIME_LAYER], 32, 9)
-    {}
+    Channel() : dx(32, 2), dy(32, 22), z(32, 20), intensity(16, 4), scan_angle(16, 2), point_source(16), gps(32, 9) {}
 
     Point14_record last;
     std::array<std::uint16_t, 8> last_intensity{};
@@ -422,7 +418,7 @@ private:
   void activate(unsigned c, const Point14_record& from)
   {
     if(!m_channels[c])
-      m_channels[c].emplace(m_decoders.data());
+      m_channels[c].emplace();
     Channel& ch = *m_channels[c];
     ch.last = from;
     ch.last.gps_time_changed = false;
@@ -479,7 +475,7 @@ private:
   {
     const unsigned s = ch.gps_current;
     ch.gps_next = (ch.gps_next + 1) & 3u;
-    const std::int32_t high = ch.gps.decompress(std::int32_t(std::uint32_t(ch.gps_last[s] >> 32)), 8);
+    const std::int32_t high = ch.gps.decompress(m_decoders[GPS_TIME_LAYER], std::int32_t(std::uint32_t(ch.gps_last[s] >> 32)), 8);
     ch.gps_last[ch.gps_next] = (std::uint64_t(std::uint32_t(high)) << 32) | m_decoders[GPS_TIME_LAYER].read_int();
     ch.gps_current = ch.gps_next;
     ch.gps_diff[ch.gps_current] = 0;
@@ -499,7 +495,7 @@ private:
         const unsigned code = d.decode_symbol(ch.gps_0diff[0]); // 0..4
         if(code == 0)
         {
-          ch.gps_diff[s] = ch.gps.decompress(0, 0);
+          ch.gps_diff[s] = ch.gps.decompress(m_decoders[GPS_TIME_LAYER], 0, 0);
           ch.gps_last[s] += std::uint64_t(std::int64_t(ch.gps_diff[s]));
           ch.gps_extremes[s] = 0;
           return;
@@ -515,7 +511,7 @@ private:
       const unsigned code = d.decode_symbol(ch.gps_multi[0]); // 0..514
       if(code == 1)
       {
-        ch.gps_last[s] += std::uint64_t(std::int64_t(ch.gps.decompress(ch.gps_diff[s], 1)));
+        ch.gps_last[s] += std::uint64_t(std::int64_t(ch.gps.decompress(m_decoders[GPS_TIME_LAYER], ch.gps_diff[s], 1)));
         ch.gps_extremes[s] = 0;
         return;
       }
@@ -524,24 +520,24 @@ private:
         std::int32_t diff;
         if(code == 0)
         {
-          diff = ch.gps.decompress(0, 7);
+          diff = ch.gps.decompress(m_decoders[GPS_TIME_LAYER], 0, 7);
           count_extreme(ch, s, diff);
         }
         else if(code < unsigned(GPS_MULTI))
-          diff = ch.gps.decompress(times(std::int32_t(code), ch.gps_diff[s]), code < 10 ? 2 : 3);
+          diff = ch.gps.decompress(m_decoders[GPS_TIME_LAYER], times(std::int32_t(code), ch.gps_diff[s]), code < 10 ? 2 : 3);
         else if(code == unsigned(GPS_MULTI))
         {
-          diff = ch.gps.decompress(times(GPS_MULTI, ch.gps_diff[s]), 4);
+          diff = ch.gps.decompress(m_decoders[GPS_TIME_LAYER], times(GPS_MULTI, ch.gps_diff[s]), 4);
           count_extreme(ch, s, diff);
         }
         else
         {
           const std::int32_t multi = GPS_MULTI - std::int32_t(code); // -1 .. -10
           if(multi > GPS_MULTI_MINUS)
-            diff = ch.gps.decompress(times(multi, ch.gps_diff[s]), 5);
+            diff = ch.gps.decompress(m_decoders[GPS_TIME_LAYER], times(multi, ch.gps_diff[s]), 5);
           else
           {
-            diff = ch.gps.decompress(times(GPS_MULTI_MINUS, ch.gps_diff[s]), 6);
+            diff = ch.gps.decompress(m_decoders[GPS_TIME_LAYER], times(GPS_MULTI_MINUS, ch.gps_diff[s]), 6);
             count_extreme(ch, s, diff);
           }
         }
