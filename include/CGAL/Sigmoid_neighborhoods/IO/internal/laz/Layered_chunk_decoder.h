@@ -16,7 +16,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,15 +27,13 @@ namespace internal {
 namespace laz {
 
 // The RGB14 item (one layer) and the RGBNIR14 item (two: RGB, then NIR), one model set and last
-// colour per scanner channel. In item version 3, a switch back to a channel met before in the chunk
-// predicts that point from the previous channel's last colour and stores it there (LASzip's v3
-// encoder and decoder both do); version 4 uses the channel's own.
+// colour per scanner channel. In item version 3 (the one read), a switch back to a channel met before
+// in the chunk predicts that point from the previous channel's last colour and stores it there
+// (LASzip's v3 encoder and decoder both do).
 class Rgb14_decoder
 {
 public:
-  Rgb14_decoder(bool nir, bool own_channel_on_switch) : m_nir(nir), m_own_on_switch(own_channel_on_switch) {}
-  Rgb14_decoder(const Rgb14_decoder&) = delete;
-  Rgb14_decoder& operator=(const Rgb14_decoder&) = delete;
+  explicit Rgb14_decoder(bool nir) : m_nir(nir) {}
 
   std::size_t layer_count() const { return m_nir ? 2 : 1; }
 
@@ -66,52 +64,17 @@ public:
         activate(channel, m_channels[from].last);
         from = channel;
       }
-      else if(m_own_on_switch)
-        from = channel;
     }
     Channel& ch = m_channels[m_current];
     std::array<std::uint16_t, 4>& last = m_channels[from].last;
 
     if(m_has_rgb)
     {
-      // Bits 0-5: which bytes (R low, R high, G low, G high, B low, B high) changed; bit 6: G and B
-      // differ from R. G and B are predicted from R's change, clamped to a byte.
-      const unsigned sym = m_rgb.decode_symbol(ch.used[0]);
-      unsigned lo[3], hi[3];
-      lo[0] = (sym & 1u) ? (m_rgb.decode_symbol(ch.diff[0]) + (last[0] & 0xFFu)) & 0xFFu : last[0] & 0xFFu;
-      hi[0] = (sym & 2u) ? (m_rgb.decode_symbol(ch.diff[1]) + (last[0] >> 8)) & 0xFFu : last[0] >> 8;
-      if(sym & (1u << 6))
-      {
-        int d = int(lo[0]) - int(last[0] & 0xFFu);
-        lo[1] = (sym & 4u) ? (m_rgb.decode_symbol(ch.diff[2]) + clamp_byte(d + int(last[1] & 0xFFu))) & 0xFFu
-                           : last[1] & 0xFFu;
-        if(sym & 16u)
-        {
-          const unsigned corr = m_rgb.decode_symbol(ch.diff[4]);
-          d = (d + int(lo[1]) - int(last[1] & 0xFFu)) / 2; // truncating, as the encoder's
-          lo[2] = (corr + clamp_byte(d + int(last[2] & 0xFFu))) & 0xFFu;
-        }
-        else
-          lo[2] = last[2] & 0xFFu;
-        d = int(hi[0]) - int(last[0] >> 8);
-        hi[1] = (sym & 8u) ? (m_rgb.decode_symbol(ch.diff[3]) + clamp_byte(d + int(last[1] >> 8))) & 0xFFu
-                           : last[1] >> 8;
-        if(sym & 32u)
-        {
-          const unsigned corr = m_rgb.decode_symbol(ch.diff[5]);
-          d = (d + int(hi[1]) - int(last[1] >> 8)) / 2;
-          hi[2] = (corr + clamp_byte(d + int(last[2] >> 8))) & 0xFFu;
-        }
-        else
-          hi[2] = last[2] >> 8;
-      }
-      else
-      {
-        lo[1] = lo[2] = lo[0];
-        hi[1] = hi[2] = hi[0];
-      }
-      for(std::size_t i = 0; i < 3; ++i)
-        last[i] = std::uint16_t(lo[i] | (hi[i] << 8));
+      const unsigned mask = m_rgb.decode_symbol(ch.used[0]);
+      const std::array<std::uint16_t, 3> rgb = predict_rgb(mask, {{last[0], last[1], last[2]}}, [&](std::size_t byte) {
+        return m_rgb.decode_symbol(ch.diff[byte]);
+      });
+      std::copy(rgb.begin(), rgb.end(), last.begin());
     }
     for(std::size_t i = 0; i < 3; ++i)
       store_little_endian<std::uint16_t>(out + 2 * i, last[i]);
@@ -141,8 +104,6 @@ private:
     Lazy_models<2, 256> nir_diff;
   };
 
-  static unsigned clamp_byte(int v) { return v <= 0 ? 0u : v >= 255 ? 255u : unsigned(v); }
-
   void activate(unsigned c, const std::array<std::uint16_t, 4>& from)
   {
     Channel& ch = m_channels[c];
@@ -154,7 +115,7 @@ private:
     m_active[c] = true;
   }
 
-  bool m_nir, m_own_on_switch;
+  bool m_nir;
   Arithmetic_decoder m_rgb, m_nir_decoder;
   bool m_has_rgb = false, m_has_nir = false;
   std::array<Channel, 4> m_channels;
@@ -162,19 +123,16 @@ private:
   unsigned m_current = 0;
 };
 
-// The BYTE14 item: `n` extra bytes, each its own layer, each coded as a byte difference. Versions as
-// for Rgb14_decoder.
+// The BYTE14 item: `n` extra bytes, each its own layer, each coded as a byte difference. Channel
+// switches as for Rgb14_decoder.
 class Byte14_decoder
 {
 public:
-  Byte14_decoder(std::size_t n, bool own_channel_on_switch)
-    : m_n(n), m_own_on_switch(own_channel_on_switch), m_decoders(new Arithmetic_decoder[n]), m_has(n, 0)
+  explicit Byte14_decoder(std::size_t n) : m_n(n), m_decoders(n), m_has(n, 0)
   {
     for(Channel& ch : m_channels)
       ch.last.assign(n, 0);
   }
-  Byte14_decoder(const Byte14_decoder&) = delete;
-  Byte14_decoder& operator=(const Byte14_decoder&) = delete;
 
   std::size_t layer_count() const { return m_n; }
 
@@ -202,8 +160,6 @@ public:
         activate(channel, m_channels[from].last.data());
         from = channel;
       }
-      else if(m_own_on_switch)
-        from = channel;
     }
     Channel& ch = m_channels[m_current];
     unsigned char* last = m_channels[from].last.data();
@@ -235,8 +191,7 @@ private:
   }
 
   std::size_t m_n;
-  bool m_own_on_switch;
-  std::unique_ptr<Arithmetic_decoder[]> m_decoders;
+  std::vector<Arithmetic_decoder> m_decoders;
   std::vector<unsigned char> m_has;
   std::array<Channel, 4> m_channels;
   std::array<bool, 4> m_active{};
@@ -267,8 +222,8 @@ public:
         throw Decode_error("the wave packets of point formats 9 and 10 (item " + name + ") are not read");
       if(item.type != POINT14 && item.type != RGB14 && item.type != RGBNIR14 && item.type != BYTE14)
         throw Decode_error("item " + name + " is not an item of LASzip's layered compression");
-      // Version 4 differs from 3 only after a switch between scanner channels, which the decoders
-      // below follow; no file here has it to test them against, so it is refused rather than guessed.
+      // Version 4 differs from 3 only after a switch between scanner channels; no file here has it to
+      // test a decoder against, so it is refused rather than guessed.
       if(item.version != 3)
         throw Decode_error("item " + name + " is not read (version 3 is)");
       if(item.type == POINT14 && i != 0)
@@ -285,18 +240,16 @@ public:
       part.type = item.type;
       part.offset = m_record_length;
       part.first_layer = m_layer_names.size();
-      // Version 4 fixed which last value a secondary item predicts from after a channel switch.
-      const bool own_on_switch = item.version >= 4;
       if(item.type == POINT14)
       {
-        m_point.reset(new Point14_decoder());
+        m_point.emplace();
         for(std::size_t l = 0; l < Point14_decoder::LAYER_COUNT; ++l)
           m_layer_names.push_back("POINT14 " + std::string(Point14_decoder::layer_name(l)));
       }
       else if(item.type == BYTE14)
       {
         part.index = m_bytes.size();
-        m_bytes.emplace_back(new Byte14_decoder(item.size, own_on_switch));
+        m_bytes.emplace_back(item.size);
         for(std::size_t l = 0; l < item.size; ++l)
           m_layer_names.push_back("BYTE14 byte " + std::to_string(l));
       }
@@ -304,7 +257,7 @@ public:
       {
         const bool nir = item.type == RGBNIR14;
         part.index = m_colors.size();
-        m_colors.emplace_back(new Rgb14_decoder(nir, own_on_switch));
+        m_colors.emplace_back(nir);
         m_layer_names.push_back(item_name(item.type) + " RGB");
         if(nir)
           m_layer_names.push_back("RGBNIR14 NIR");
@@ -357,9 +310,9 @@ public:
     for(const Part& p : m_parts)
     {
       if(p.type == BYTE14)
-        m_bytes[p.index]->start(out + p.offset, m_layers.data() + p.first_layer, first_channel);
+        m_bytes[p.index].start(out + p.offset, m_layers.data() + p.first_layer, first_channel);
       else
-        m_colors[p.index]->start(out + p.offset, m_layers.data() + p.first_layer, first_channel);
+        m_colors[p.index].start(out + p.offset, m_layers.data() + p.first_layer, first_channel);
     }
 
     unsigned char* record = out;
@@ -370,9 +323,9 @@ public:
       for(const Part& p : m_parts)
       {
         if(p.type == BYTE14)
-          m_bytes[p.index]->decode(record + p.offset, channel);
+          m_bytes[p.index].decode(record + p.offset, channel);
         else
-          m_colors[p.index]->decode(record + p.offset, channel);
+          m_colors[p.index].decode(record + p.offset, channel);
       }
     }
   }
@@ -385,11 +338,9 @@ private:
     std::size_t offset = 0, index = 0, first_layer = 0;
   };
 
-  // Behind pointers: the items' integer decompressors refer to their own arithmetic decoders, and the
-  // chunk decoder itself must stay movable.
-  std::unique_ptr<Point14_decoder> m_point;
-  std::vector<std::unique_ptr<Rgb14_decoder>> m_colors;
-  std::vector<std::unique_ptr<Byte14_decoder>> m_bytes;
+  std::optional<Point14_decoder> m_point;
+  std::vector<Rgb14_decoder> m_colors;
+  std::vector<Byte14_decoder> m_bytes;
   std::vector<Part> m_parts;
   std::vector<std::string> m_layer_names; // for the messages
   std::vector<Layer_bytes> m_layers;      // this chunk's, one per layer name

@@ -10,6 +10,7 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_decoder.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/integer_decompressor.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/laz_items.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/predictors.h>
 
 #include <array>
 #include <cstddef>
@@ -23,8 +24,8 @@ namespace Sigmoid_neighborhoods {
 namespace internal {
 namespace laz {
 
-// The POINT14 item of LASzip's layered compression (LAZ 1.4, point formats 6 to 10; item versions 3
-// and 4) and what the other layered items share (RGB14, RGBNIR14 and BYTE14 are in
+// The POINT14 item of LASzip's layered compression (LAZ 1.4, point formats 6 to 10; item version
+// 3) and what the other layered items share (RGB14, RGBNIR14 and BYTE14 are in
 // Layered_chunk_decoder.h). Every field of a chunk is coded in its own layer, each layer by its own
 // arithmetic coder, and all models are kept once per scanner channel (4): a point is predicted from
 // the last point of its own channel. POINT14 decodes first and tells the other items the channel.
@@ -35,120 +36,6 @@ struct Layer_bytes
   const unsigned char* begin = nullptr;
   const unsigned char* end = nullptr;
   bool empty() const { return begin == end; }
-};
-
-// N symbol models of `Symbols` symbols that a chunk's channel starts fresh. LASzip creates some of
-// them only when a context first occurs; a model is therefore (re)initialised on its first use after
-// reset(), which gives the same state as initialising all of them at the start and costs nothing for
-// the contexts a chunk never meets. Allocated once, kept across chunks.
-template <std::size_t N, std::uint32_t Symbols>
-class Lazy_models
-{
-  static_assert(N <= 64, "the fresh mask has 64 bits");
-
-public:
-  void reset() { m_fresh = 0; }
-
-  Arithmetic_model& operator[](std::size_t i)
-  {
-    if(!((m_fresh >> i) & 1u))
-    {
-      if(!m_models[i])
-        m_models[i].emplace(Symbols);
-      m_models[i]->init();
-      m_fresh |= std::uint64_t(1) << i;
-    }
-    return *m_models[i];
-  }
-
-private:
-  std::array<std::optional<Arithmetic_model>, N> m_models;
-  std::uint64_t m_fresh = 0;
-};
-
-// LASzip's running estimate of the middle of the last few coordinate differences (its
-// "StreamingMedian5"): five sorted values, each new one displacing from the high or the low end in
-// turn. Not an exact median; what matters is that it predicts exactly as the encoder did.
-class Streaming_median5
-{
-public:
-  void reset()
-  {
-    m_v = {0, 0, 0, 0, 0};
-    m_high = true;
-  }
-  std::int32_t get() const { return m_v[2]; }
-  void add(std::int32_t x)
-  {
-    if(m_high)
-    {
-      if(x < m_v[2])
-      {
-        m_v[4] = m_v[3];
-        m_v[3] = m_v[2];
-        if(x < m_v[0])
-        {
-          m_v[2] = m_v[1];
-          m_v[1] = m_v[0];
-          m_v[0] = x;
-        }
-        else if(x < m_v[1])
-        {
-          m_v[2] = m_v[1];
-          m_v[1] = x;
-        }
-        else
-          m_v[2] = x;
-      }
-      else
-      {
-        if(x < m_v[3])
-        {
-          m_v[4] = m_v[3];
-          m_v[3] = x;
-        }
-        else
-          m_v[4] = x;
-        m_high = false;
-      }
-    }
-    else
-    {
-      if(m_v[2] < x)
-      {
-        m_v[0] = m_v[1];
-        m_v[1] = m_v[2];
-        if(m_v[4] < x)
-        {
-          m_v[2] = m_v[3];
-          m_v[3] = m_v[4];
-          m_v[4] = x;
-        }
-        else if(m_v[3] < x)
-        {
-          m_v[2] = m_v[3];
-          m_v[3] = x;
-        }
-        else
-          m_v[2] = x;
-      }
-      else
-      {
-        if(m_v[1] < x)
-        {
-          m_v[0] = m_v[1];
-          m_v[1] = x;
-        }
-        else
-          m_v[0] = x;
-        m_high = true;
-      }
-    }
-  }
-
-private:
-  std::array<std::int32_t, 5> m_v{{0, 0, 0, 0, 0}};
-  bool m_high = true;
 };
 
 // The 30 bytes of a LAS 1.4 point (formats 6 to 10), kept as the record stores them.
@@ -225,7 +112,7 @@ inline unsigned return_level_8ctx(unsigned n, unsigned r)
   return d < 7 ? d : 7;
 }
 
-// The POINT14 item (v3; v4 codes the same bits): nine layers.
+// The POINT14 item, version 3: nine layers.
 class Point14_decoder
 {
 public:
@@ -252,8 +139,6 @@ public:
   }
 
   Point14_decoder() = default;
-  Point14_decoder(const Point14_decoder&) = delete; // the decoders hold positions in the layers
-  Point14_decoder& operator=(const Point14_decoder&) = delete;
 
   // Starts a chunk from its first point (raw) and its nine layers; returns the first point's channel.
   unsigned start(const unsigned char* first, const Layer_bytes* layers)
