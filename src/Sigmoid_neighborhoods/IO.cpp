@@ -7,6 +7,7 @@
 #  error "compile with CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO defined (CMake target Sigmoid_neighborhoods_IO)"
 #endif
 
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/estimate_oriented_normals_impl.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_oriented_point_set_impl.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_polygon_mesh_impl.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_tile_catalog_impl.h>

@@ -42,6 +42,23 @@ for threads in 1 2; do
 done
 cmp "$dir/capped1.ply" "$dir/capped2.ply" || fail "the forests of 1 and 2 threads predict differently"
 
+# --choose-scales: the first scale in metres chosen on the training file among the ladder, stored with
+# its scores; the voxel and the pyramid's cell are that scale; refused beside a given voxel
+"$tool" classify train "$b9" -o "$dir/chosen.bin" --labels $labels --features cgal-metric,pyramid --trees 2 \
+  --choose-scales 2> "$dir/chosen.txt" || fail "train --choose-scales: $(cat "$dir/chosen.txt")"
+grep -q "first scale in metres chosen: " "$dir/chosen.txt" || fail "choice summary: $(cat "$dir/chosen.txt")"
+chosen=$(sed -n 2p "$dir/chosen.bin" | grep -o '"chosen":[0-9.]*' | cut -d: -f2)
+case "$chosen" in 0.0625|0.125|0.25|0.5|1.0) ;; *) fail "chosen scale '$chosen' is not on the ladder" ;; esac
+sed -n 2p "$dir/chosen.bin" | grep -q "\"cgal_voxel\":$chosen," || fail "the voxel is not the chosen scale"
+sed -n 2p "$dir/chosen.bin" | grep -q "\"cell\":$chosen," || fail "the pyramid's cell is not the chosen scale"
+sed -n 2p "$dir/chosen.bin" | grep -q '"ladder":\[0.0625,0.125,0.25,0.5,1.0\]' || fail "the ladder is not in the model"
+"$tool" classify predict "$dir/chosen.bin" "$b9" -o "$dir/chosen.ply" 2> "$dir/chosen_predict.txt" ||
+  fail "predict with a chosen scale: $(cat "$dir/chosen_predict.txt")"
+expect_refusal "--choose-scales chooses --cgal-voxel and --pyramid-cell" "$tool" classify train "$b9" \
+  -o "$dir/none.bin" --labels $labels --features cgal-metric --choose-scales --cgal-voxel 1
+expect_refusal "--choose-scales: no group of --features has scales in metres" "$tool" classify train "$b9" \
+  -o "$dir/none.bin" --labels $labels --features k20 --choose-scales
+
 # --sigmoid: the weights of multiscale-sigmoid, stored in the model (20deg and 50deg in radians);
 # more than two angles or one out of [0, pi] is refused
 "$tool" classify train "$b9" -o "$dir/sigmoid.bin" --labels $labels --features multiscale-sigmoid --trees 2 \

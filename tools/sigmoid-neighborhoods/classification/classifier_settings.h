@@ -19,8 +19,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -31,6 +32,17 @@ const char* const CLASSIFIER_MODEL_MAGIC = "sigmoid-neighborhoods classifier 1";
 // A model's JSON line is a few kilobytes; more is not a model of the tool.
 constexpr std::size_t LARGEST_MODEL_HEADER = 1 << 20;
 
+// How classify train chose the first scale of the groups with scales in metres (scale_choice.h):
+// each candidate's mean IoU in cross-validation at the training density and trained 4x thinner.
+struct Scale_choice_report
+{
+  std::vector<double> ladder, same_density, thinned; // metres, and the mean IoU of each
+  double chosen = 0.;
+  std::size_t cap = 0;        // training points per class and fold during the choice
+  std::size_t training_points = 0, test_points = 0; // of a fold's forests, summed over the folds
+  double seconds = 0.;
+};
+
 struct Classifier_settings
 {
   Label_mapping labels;
@@ -40,6 +52,7 @@ struct Classifier_settings
   unsigned int trees = 25, depth = 20;
   unsigned int feature_order_seed = 0;
   unsigned int max_per_class = 0; // training points per class at most (0: all), evenly spaced
+  std::optional<Scale_choice_report> scale_choice; // when classify train chose the scales
 };
 
 inline nlohmann::json settings_json(const Classifier_settings& s)
@@ -68,6 +81,18 @@ inline nlohmann::json settings_json(const Classifier_settings& s)
   j["depth"] = s.depth;
   j["feature_order_seed"] = s.feature_order_seed;
   j["max_per_class"] = s.max_per_class;
+  if(s.scale_choice) // for the reader; the scales themselves are the features' settings above
+  {
+    const Scale_choice_report& c = *s.scale_choice;
+    j["scale_choice"] = {{"ladder", c.ladder},
+                         {"same_density", c.same_density},
+                         {"thinned", c.thinned},
+                         {"chosen", c.chosen},
+                         {"cap_per_class", c.cap},
+                         {"training_points", c.training_points},
+                         {"test_points", c.test_points},
+                         {"seconds", c.seconds}};
+  }
   return j;
 }
 

@@ -7,6 +7,7 @@
 
 #include "classify_common.h"
 #include "classify_training.h"
+#include "training_rows.h"
 #include "feature_groups.h"
 
 #include "../ply_output.h"
@@ -103,8 +104,6 @@ Featured_file read_and_feature(const std::string& path, const Label_mapping& lab
   return f;
 }
 
-namespace {
-
 std::vector<std::string> column_names(const std::vector<Feature_column>& columns)
 {
   std::vector<std::string> names;
@@ -112,6 +111,8 @@ std::vector<std::string> column_names(const std::vector<Feature_column>& columns
     names.push_back(c.name);
   return names;
 }
+
+namespace {
 
 // The names in the forest's order: as computed, or shuffled by a seed.
 std::vector<std::string> ordered_names(std::vector<std::string> names, unsigned int seed)
@@ -123,6 +124,8 @@ std::vector<std::string> ordered_names(std::vector<std::string> names, unsigned 
   }
   return names;
 }
+
+} // namespace
 
 // At most `cap` training points per class (0: all), evenly spaced in the files' order (a scan's order
 // sweeps the ground: the kept points cover the survey), the others marked -1, which CGAL's training
@@ -150,40 +153,7 @@ void cap_points_per_class(std::vector<int>& truth, std::size_t classes, std::siz
   }
 }
 
-// An allocator whose resize() leaves the values uninitialised: the rows are written once, on every
-// thread, so that their pages are first touched by the threads that fill them, not zeroed by one.
-template <typename T>
-struct Uninitialized_allocator : std::allocator<T>
-{
-  template <typename U>
-  struct rebind
-  {
-    typedef Uninitialized_allocator<U> other;
-  };
-  Uninitialized_allocator() = default;
-  template <typename U>
-  Uninitialized_allocator(const Uninitialized_allocator<U>&) noexcept
-  {
-  }
-  template <typename U>
-  void construct(U* p) noexcept
-  {
-    ::new(static_cast<void*>(p)) U;
-  }
-  template <typename U, typename... Args>
-  void construct(U* p, Args&&... args)
-  {
-    ::new(static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-};
-
-// The training points' features, row-major in the forest's order, as CGAL's forest reads them
-// (Feature_values::stored_value()), and their classes.
-struct Training_rows
-{
-  std::vector<float, Uninitialized_allocator<float>> values;
-  std::vector<int> labels;
-};
+namespace {
 
 // Marks -1 in `truth` (one vector per file) the points that do not train (--max-per-class, over the
 // files one after the other), after checking that every class has a point; returns how many train.
@@ -209,7 +179,8 @@ std::size_t choose_training_points(std::vector<std::vector<int>>& truth, const C
   return std::size_t(std::count_if(all.begin(), all.end(), [](int c) { return c >= 0; }));
 }
 
-// Appends the rows of the points of `columns` whose `truth` is a class, with the features `names`.
+} // namespace
+
 void append_training_rows(const std::vector<Feature_column>& columns, const std::vector<int>& truth,
                           const std::vector<std::string>& names, unsigned int threads, Training_rows& rows)
 {
@@ -242,6 +213,8 @@ void append_training_rows(const std::vector<Feature_column>& columns, const std:
   }
   (void)threads;
 }
+
+namespace {
 
 void train_forest(Training_rows& rows, Trained& t)
 {

@@ -337,7 +337,7 @@ const std::vector<Feature_group>& feature_groups()
      "first from each file's spacing, as CGAL chooses it",
      no_neighbors, no_halo, nullptr,
      [](const Feature_options&) { return false; }, // CGAL takes its scales from the whole set's spacing
-     [](Feature_group_input& in, Columns& c) { compute_cgal(in, 0., false, c); }, CGAL_FAMILY},
+     [](Feature_group_input& in, Columns& c) { compute_cgal(in, 0., false, c); }, CGAL_FAMILY, false},
     {"cgal-metric",
      "the same on scales in metres: --cgal-voxel 0.5 m times 1, 2, 4 ... (a model\n"
      "applies at another density), its grids anchored at the origin (tile by tile)",
@@ -346,7 +346,7 @@ const std::vector<Feature_group>& feature_groups()
        return anchored_cgal_checked_halo(m, o, e, f, l, false);
      },
      anchored_at_origin, [](Feature_group_input& in, Columns& c) { compute_cgal(in, in.options.cgal_voxel, false, c); },
-     CGAL_FAMILY},
+     CGAL_FAMILY, true},
     {"cgal-grid",
      "the features of cgal-metric's planimetric grids alone (vertical dispersion,\n"
      "elevation, heights below and above, vertical range): no eigen analysis",
@@ -355,36 +355,36 @@ const std::vector<Feature_group>& feature_groups()
        return anchored_cgal_checked_halo(m, o, e, f, l, true);
      },
      anchored_at_origin, [](Feature_group_input& in, Columns& c) { compute_cgal(in, in.options.cgal_voxel, true, c); },
-     CGAL_FAMILY},
+     CGAL_FAMILY, true},
     {"k20", "the eigen features (linearity ... normal_z) at k = 20, equal weights",
      [](const Feature_options& o) { return o.fixed_k; }, no_halo, nullptr, any_tile,
-     [](Feature_group_input& in, Columns& c) { compute_scales(in, {in.options.fixed_k}, false, c); }, nullptr},
+     [](Feature_group_input& in, Columns& c) { compute_scales(in, {in.options.fixed_k}, false, c); }, nullptr, false},
     {"eigenentropy", "the same at the eigenentropy-optimal k of Weinmann et al., equal weights, and k",
      optimal_neighbors, no_halo, nullptr, any_tile,
      [](Feature_group_input& in, Columns& c) {
        compute_optimal(in, SN::Neighborhood_criterion::EIGENENTROPY, false, "_eigenentropy", c);
      },
-     nullptr},
+     nullptr, false},
     {"dimensionality", "the same at the E_dim-optimal k, equal weights, and k", optimal_neighbors, no_halo, nullptr,
      any_tile,
      [](Feature_group_input& in, Columns& c) {
        compute_optimal(in, SN::Neighborhood_criterion::DIMENSIONALITY, false, "_dimensionality", c);
      },
-     nullptr},
+     nullptr, false},
     {"optimal", "the same at the optimal sigmoid triple (a*, b*, k*), and k, a, b, the radius", optimal_neighbors,
      no_halo, nullptr, any_tile,
      [](Feature_group_input& in, Columns& c) {
        compute_optimal(in, SN::Neighborhood_criterion::DIMENSIONALITY, true, "_optimal", c);
      },
-     nullptr},
+     nullptr, false},
     {"multiscale", "the eigen features at k = 10, 25, 50, 100 (--scales), equal weights", scale_neighbors, no_halo,
      nullptr, any_tile, [](Feature_group_input& in, Columns& c) { compute_scales(in, in.options.scales, false, c); },
-     nullptr},
+     nullptr, false},
     {"multiscale-sigmoid",
      "the same with the sigmoid weights of --sigmoid A,B (default 30deg,60deg; the\n"
      "smaller angle is a, the larger b, one angle a step; pyramid-sigmoid's weights too)",
      scale_neighbors, no_halo, nullptr, any_tile,
-     [](Feature_group_input& in, Columns& c) { compute_scales(in, in.options.scales, true, c); }, nullptr},
+     [](Feature_group_input& in, Columns& c) { compute_scales(in, in.options.scales, true, c); }, nullptr, false},
     {"height", "z above the lowest point, below the highest and the range in 2.5, 5, 10 m cells", no_neighbors,
      [](const Feature_options& o, bool) { return cells_halo(*std::max_element(o.cell_sizes.begin(), o.cell_sizes.end())); },
      nullptr, any_tile,
@@ -392,18 +392,18 @@ const std::vector<Feature_group>& feature_groups()
        for(double cell : in.options.cell_sizes)
          append_height_features(in.model, cell, "_cell" + number17(cell), c);
      },
-     nullptr},
+     nullptr, false},
     {PYRAMID,
      "the eigen features at k = 10 on voxel grids of --pyramid-cell x 2^l metres, l below\n"
      "--pyramid-levels, each point's from its nearest representative, and the heights\n"
      "in the same cells (scales in metres: a model applies at another density)",
      no_neighbors, pyramid_halo, pyramid_halo_width, any_tile,
-     [](Feature_group_input& in, Columns& c) { compute_pyramid(in, false, c); }, nullptr},
+     [](Feature_group_input& in, Columns& c) { compute_pyramid(in, false, c); }, nullptr, true},
     {PYRAMID_SIGMOID,
      "the same with the sigmoid weights of --sigmoid, on the levels of\n"
      "--pyramid-sigmoid-cells C,... (default every level; the others with equal weights)",
      no_neighbors, pyramid_halo, pyramid_halo_width, any_tile,
-     [](Feature_group_input& in, Columns& c) { compute_pyramid(in, true, c); }, nullptr}};
+     [](Feature_group_input& in, Columns& c) { compute_pyramid(in, true, c); }, nullptr, true}};
   return groups;
 }
 

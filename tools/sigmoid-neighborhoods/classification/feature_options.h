@@ -122,6 +122,9 @@ struct Feature_group
   void (*compute)(Feature_group_input&, std::vector<Feature_column>&);
   // groups of one family give the same columns (CGAL's): one of them at most in a set
   const char* family;
+  // its scales are in metres, from a first scale that classify train may choose (cgal_voxel and
+  // pyramid_cell, set together: scale_choice.h)
+  bool metric_scales;
 };
 
 // The groups, in the order of --help.

@@ -1,0 +1,238 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// classify train's choice of the first scale in metres (scale_choice.h).
+
+#include "scale_choice.h"
+
+#include "classify_common.h"
+#include "confusion.h"
+#include "feature_groups.h"
+#include "training_rows.h"
+
+#include <CGAL/Sigmoid_neighborhoods/Classification/Ethz_forest.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/estimate_oriented_normals.h>
+#include <CGAL/Sigmoid_neighborhoods/concurrency.h>
+
+#include <CGAL/Real_timer.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sigmoid_tool {
+namespace classification {
+
+const std::vector<double>& scale_ladder()
+{
+  static const std::vector<double> ladder{0.0625, 0.125, 0.25, 0.5, 1.};
+  return ladder;
+}
+
+bool has_metric_scales(const Feature_options& o)
+{
+  for(const Feature_group* g : groups_of(o))
+    if(g->metric_scales)
+      return true;
+  return false;
+}
+
+Feature_options with_first_scale(Feature_options o, double first)
+{
+  const double factor = first / o.pyramid_cell;
+  for(double& c : o.pyramid_sigmoid_cells)
+    c *= factor; // the ladder's steps are powers of two: exact
+  o.cgal_voxel = first;
+  o.pyramid_cell = first;
+  return o;
+}
+
+namespace {
+
+// A file of the choice: its points with their normals and neighbor rows, each point's class and fold.
+struct Fold_file
+{
+  Featured_file file;
+  std::vector<unsigned char> fold;
+};
+
+// The fold of a point: the parity of its block in a checkerboard of 4 x 4 blocks over `extent`.
+unsigned char fold_of(const SN::Oriented_point_set::Point_3& p, const CGAL::Bbox_2& extent)
+{
+  auto block = [](double v, double lo, double hi) {
+    const double width = (hi - lo) / 4.;
+    const int b = width > 0. ? int(std::floor((v - lo) / width)) : 0;
+    return std::clamp(b, 0, 3);
+  };
+  return static_cast<unsigned char>((block(p.x(), extent.xmin(), extent.xmax()) +
+                                     block(p.y(), extent.ymin(), extent.ymax())) & 1);
+}
+
+// A copy of `f` keeping each point with probability 1/4 (a generator seeded by `seed`), its normals
+// estimated again on the thinned points, as a survey 4x thinner would have them.
+Featured_file thinned_copy(const Featured_file& f, unsigned int seed, const Label_mapping& labels,
+                           const SN::Normal_options& normals, const Feature_options& features)
+{
+  Featured_file t;
+  t.path = f.path + " (thinned 4x)";
+  std::mt19937 random(seed);
+  const SN::Oriented_point_set& m = f.model;
+  for(std::size_t i = 0; i < m.points.size(); ++i)
+    if((random() & 3u) == 0)
+    {
+      t.model.points.push_back(m.points[i]);
+      t.model.labels.push_back(m.labels[i]);
+    }
+  SN::Normal_options o = normals;
+  o.kept_neighbors = largest_neighborhood(features);
+  o.neighbors = std::min<unsigned int>(o.neighbors, unsigned(std::max<std::size_t>(t.model.points.size(), 1) - 1));
+  read_input(t.path, [&] {
+    SN::estimate_oriented_normals(t.model, o);
+    return 0;
+  });
+  add_features(t, labels, true, features, false);
+  return t;
+}
+
+// The truth of the points of fold `fold` that train its forest: at most `cap` per class over the
+// files, evenly spaced; -1 elsewhere.
+std::vector<std::vector<int>> training_truth(const std::vector<Fold_file>& files, unsigned char fold,
+                                             std::size_t classes, std::size_t cap)
+{
+  std::vector<int> all;
+  for(const Fold_file& f : files)
+    for(std::size_t i = 0; i < f.file.truth.size(); ++i)
+      all.push_back(f.fold[i] == fold ? f.file.truth[i] : -1);
+  cap_points_per_class(all, classes, cap);
+  std::vector<std::vector<int>> truth;
+  std::size_t at = 0;
+  for(const Fold_file& f : files)
+  {
+    truth.emplace_back(all.begin() + std::ptrdiff_t(at), all.begin() + std::ptrdiff_t(at + f.file.truth.size()));
+    at += f.file.truth.size();
+  }
+  return truth;
+}
+
+// The pooled confusion of the two folds' forests, each trained on `train[fold]` and predicting the
+// other fold's `test`.
+Confusion cross_validated(const std::array<Training_rows, 2>& train, const std::array<Training_rows, 2>& test,
+                          std::size_t width, const Classifier_settings& s)
+{
+  Confusion pooled(s.labels.names.size());
+  for(std::size_t fold = 0; fold < 2; ++fold)
+  {
+    const SN::Classification::Ethz_forest forest = SN::Classification::Ethz_forest::train<SN::Parallel_if_available_tag>(
+      train[fold].values, train[fold].labels, s.labels.names.size(), s.trees, s.depth,
+      SN::parameters::number_of_threads(s.features.threads));
+    const Training_rows& other = test[1 - fold];
+    std::vector<int> predicted;
+    std::vector<std::vector<float>> confidence;
+    forest.classify<SN::Parallel_if_available_tag>(
+      other.labels.size(), [&](std::size_t i, std::size_t f) { return other.values[i * width + f]; }, predicted,
+      confidence, SN::parameters::number_of_threads(s.features.threads));
+    for(std::size_t i = 0; i < predicted.size(); ++i)
+      pooled.add(other.labels[i], predicted[i]);
+  }
+  return pooled;
+}
+
+} // namespace
+
+Scale_choice_report choose_first_scale(const std::vector<std::string>& paths, const Classifier_settings& s,
+                                       std::size_t cap)
+{
+  CGAL::Real_timer timer;
+  timer.start();
+  const std::size_t classes = s.labels.names.size();
+  // every file read once, with the neighbor rows of its features, and a thinned copy of each
+  std::vector<Fold_file> files, thinned;
+  CGAL::Bbox_2 extent;
+  for(const std::string& path : paths)
+  {
+    Fold_file f;
+    f.file = read_and_feature(path, s.labels, true, s.normals, s.features, false);
+    for(const auto& p : f.file.model.points)
+      extent += CGAL::Bbox_2(p.x(), p.y(), p.x(), p.y());
+    files.push_back(std::move(f));
+  }
+  for(std::size_t i = 0; i < files.size(); ++i)
+  {
+    progress(paths[i] + ": thinned 4x for the choice of scales");
+    Fold_file t;
+    t.file = thinned_copy(files[i].file, unsigned(i) + 1, s.labels, s.normals, s.features);
+    thinned.push_back(std::move(t));
+  }
+  for(std::vector<Fold_file>* set : {&files, &thinned})
+    for(Fold_file& f : *set)
+    {
+      f.fold.resize(f.file.model.points.size());
+      for(std::size_t i = 0; i < f.fold.size(); ++i)
+        f.fold[i] = fold_of(f.file.model.points[i], extent);
+    }
+  std::array<std::vector<std::vector<int>>, 2> train_truth, thinned_truth, test_truth;
+  for(unsigned char fold = 0; fold < 2; ++fold)
+  {
+    train_truth[fold] = training_truth(files, fold, classes, cap);
+    thinned_truth[fold] = training_truth(thinned, fold, classes, cap);
+    test_truth[fold] = training_truth(files, fold, classes, 0);
+  }
+
+  Scale_choice_report report;
+  report.ladder = scale_ladder();
+  report.cap = cap;
+  for(double first : report.ladder)
+  {
+    const Feature_options o = with_first_scale(s.features, first);
+    std::array<Training_rows, 2> train, test, thin;
+    std::vector<std::string> names;
+    // each file's features computed once, its rows appended to every set of rows that takes them
+    typedef std::array<std::vector<std::vector<int>>, 2> Truth;
+    auto append = [&](const std::vector<Fold_file>& set, const std::vector<std::pair<const Truth*, std::array<Training_rows, 2>*>>& targets) {
+      for(std::size_t i = 0; i < set.size(); ++i)
+      {
+        const std::vector<Feature_column> columns = compute_feature_columns(
+          set[i].file.model, o, [&](const std::string& step) {
+            progress(set[i].file.path + ": scale " + number17(first) + " m: " + step);
+          });
+        if(names.empty())
+          names = column_names(columns);
+        for(const auto& target : targets)
+          for(std::size_t fold = 0; fold < 2; ++fold)
+            append_training_rows(columns, (*target.first)[fold][i], names, o.threads, (*target.second)[fold]);
+      }
+    };
+    append(files, {{&train_truth, &train}, {&test_truth, &test}});
+    append(thinned, {{&thinned_truth, &thin}});
+    for(std::size_t fold = 0; fold < 2; ++fold)
+      if(train[fold].labels.empty() || thin[fold].labels.empty() || test[fold].labels.empty())
+        throw Usage_error("too few labeled points to choose the scales in metres (a fold of the checkerboard is "
+                          "empty): give --cgal-voxel and --pyramid-cell");
+    report.same_density.push_back(cross_validated(train, test, names.size(), s).mean_iou());
+    report.thinned.push_back(cross_validated(thin, test, names.size(), s).mean_iou());
+    report.training_points = train[0].labels.size() + train[1].labels.size();
+    report.test_points = test[0].labels.size() + test[1].labels.size();
+  }
+  // the best of the worse of both densities; ties to the coarser scale
+  double best = -std::numeric_limits<double>::infinity();
+  for(std::size_t c = 0; c < report.ladder.size(); ++c)
+  {
+    const double score = std::min(report.same_density[c], report.thinned[c]);
+    if(score >= best)
+    {
+      best = score;
+      report.chosen = report.ladder[c];
+    }
+  }
+  report.seconds = timer.time();
+  return report;
+}
+
+} // namespace classification
+} // namespace sigmoid_tool
