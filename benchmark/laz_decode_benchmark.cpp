@@ -7,7 +7,7 @@
 // points and fields, duplicates merged, no normals), which is what a command pays.
 // usage: laz_decode_benchmark [--threads 1,2] [--runs 5 (0: one run, no warm-up)] FILE...
 
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_las.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/read_las_records.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 
 #include <algorithm>
@@ -53,12 +53,12 @@ double median_seconds(unsigned int runs, const Run& run)
 
 std::size_t decode_records(const std::string& path, unsigned int threads)
 {
-  std::ifstream in(path, std::ios::binary);
-  const SN::internal::Las_header h = SN::internal::read_las_header(in, std::filesystem::file_size(path));
   std::size_t checksum = 0;
-  SN::internal::for_each_las_record_block(in, h, threads, [&](std::size_t, const unsigned char* r, std::size_t count) {
-    checksum += count + r[0]; // keeps the records alive for the optimizer
-  });
+  SN::read_las_records(
+    path, [&](std::size_t, const unsigned char* r, std::size_t count) {
+      checksum += count + r[0]; // keeps the records alive for the optimizer
+    },
+    threads);
   return checksum;
 }
 
@@ -94,7 +94,7 @@ int main(int argc, char** argv)
   {
     try
     {
-      const SN::internal::Las_header h = SN::internal::read_las_header(path);
+      const SN::Las_header h = SN::read_las_header(path);
       for(unsigned int t : thread_counts)
       {
         const double decode = median_seconds(runs, [&] { decode_records(path, t); });

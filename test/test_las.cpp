@@ -7,7 +7,9 @@
 // anything is sized to them; the IGN LiDAR HD tile of the shared data when present;
 // labels of PLY point sets; zero normals in point-set files under Normal_source::AUTO.
 
+#include <CGAL/Sigmoid_neighborhoods/IO/Las_writer.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_las.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/read_las_records.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 
 #include "test_scratch.h"
@@ -29,6 +31,7 @@
 #include <set>
 #include <string>
 #include <system_error>
+#include <tuple>
 #include <vector>
 
 namespace SN = CGAL::Sigmoid_neighborhoods;
@@ -228,7 +231,7 @@ TEST_CASE("LAS: every version 1.0-1.4 and point data format 0-10 read exactly", 
         const std::string path = write_bytes("v1" + std::to_string(minor) + "_f" + std::to_string(format) + ".las",
                                              las.bytes());
 
-        const SN::internal::Las_header h = SN::internal::read_las_header(path);
+        const SN::Las_header h = SN::internal::read_las_header(path);
         CHECK(h.version_major == 1);
         CHECK(h.version_minor == minor);
         CHECK(h.point_format == format);
@@ -489,7 +492,7 @@ TEST_CASE("LAS: the IGN LiDAR HD tile of the shared data", "[las][io]")
     WARN("not found, skipped: " << path);
     return;
   }
-  const SN::internal::Las_header h = SN::internal::read_las_header(path);
+  const SN::Las_header h = SN::internal::read_las_header(path);
   CHECK(h.version_major == 1);
   CHECK(h.version_minor == 4);
   CHECK(h.point_format == 8);
@@ -542,6 +545,17 @@ TEST_CASE("LAS: the IGN LiDAR HD tile of the shared data", "[las][io]")
   CHECK(model.labels.size() == 73352);
   CHECK(model.intensities.size() == 73352);
   CHECK(model.gps_times.size() == 73352);
+  // each record's point: the merged records point at their first's position, every point has its record
+  REQUIRE(model.point_of_input.size() == 73355);
+  std::vector<std::size_t> records_of_point(model.points.size(), 0);
+  for(std::size_t r = 0; r < raw.points.size(); ++r)
+  {
+    REQUIRE(model.point_of_input[r] < model.points.size());
+    CHECK(model.points[model.point_of_input[r]] == raw.points[r]);
+    ++records_of_point[model.point_of_input[r]];
+  }
+  CHECK(std::count(records_of_point.begin(), records_of_point.end(), 2) == 3);
+  CHECK(std::count(records_of_point.begin(), records_of_point.end(), 0) == 0);
 }
 
 TEST_CASE("PLY point sets: a label, class or classification property becomes the labels", "[las][io][ply]")
@@ -718,4 +732,216 @@ TEST_CASE("zero normals: a few zero normals are estimated and agree in sign with
   CHECK_THROWS_WITH(SN::read_oriented_point_set(file, 0), Catch::Contains("point 17 has a zero normal"));
   // a file with normals and none zero counts none
   CHECK(SN::read_oriented_point_set(sphere_file("no_zero.xyz", 100, {})).zero_normals == 0);
+}
+
+namespace {
+
+// The bytes of the file `path`.
+std::string file_bytes(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+template <typename T>
+T get(const std::string& bytes, std::size_t at)
+{
+  REQUIRE(at + sizeof(T) <= bytes.size());
+  return SN::load_little_endian<T>(reinterpret_cast<const unsigned char*>(bytes.data()) + at);
+}
+
+// `input`'s records with `added` values (record i: 0.5 i, i, 100 + 0.01 i) through a Las_writer.
+std::string write_with_values(const std::string& input, const std::string& output,
+                              const std::vector<SN::Las_extra_dimension>& added)
+{
+  std::ofstream out(output, std::ios::binary | std::ios::trunc);
+  SN::Las_writer writer(out, SN::las_output_layout_like(input, added));
+  const SN::Las_output_layout& l = writer.layout();
+  std::vector<unsigned char> block;
+  SN::read_las_records(input, [&](std::size_t first, const unsigned char* records, std::size_t count) {
+    block.assign(count * l.record_length, 0);
+    for(std::size_t i = 0; i < count; ++i)
+    {
+      unsigned char* r = block.data() + i * l.record_length;
+      std::memcpy(r, records + i * l.copied_record_length, l.copied_record_length);
+      const double values[] = {0.5 * double(first + i), double(first + i), 100. + 0.01 * double(first + i)};
+      for(std::size_t j = 0; j < l.added.size(); ++j)
+        SN::store_las_extra(r, l, j, values[j]);
+    }
+    writer.write(block.data(), count);
+  });
+  writer.close();
+  out.close();
+  return file_bytes(output);
+}
+
+// The descriptors of the Extra Bytes record of a LAS 1.4 file: type, options, name.
+std::vector<std::tuple<int, int, std::string>> extra_bytes_descriptors(const std::string& bytes)
+{
+  std::vector<std::tuple<int, int, std::string>> out;
+  std::size_t at = get<std::uint16_t>(bytes, 94);
+  for(std::uint32_t v = 0; v < get<std::uint32_t>(bytes, 100); ++v)
+  {
+    const std::size_t length = get<std::uint16_t>(bytes, at + 20);
+    if(bytes.compare(at + 2, 9, "LASF_Spec") == 0 && get<std::uint16_t>(bytes, at + 18) == 4)
+      for(std::size_t d = at + 54; d + 192 <= at + 54 + length; d += 192)
+        out.emplace_back(int(std::uint8_t(bytes[d + 2])), int(std::uint8_t(bytes[d + 3])),
+                         std::string(bytes.c_str() + d + 4));
+    at += 54 + length;
+  }
+  return out;
+}
+
+const std::vector<SN::Las_extra_dimension> ADDED = {
+  {"value", "half the index", SN::Las_extra_bytes_type::FLOAT},
+  {"count", "the index", SN::Las_extra_bytes_type::UNSIGNED_CHAR},
+  {"scaled", "100 + index / 100", SN::Las_extra_bytes_type::SHORT, 0.01, 100.}};
+
+} // namespace
+
+TEST_CASE("LAS out: a LAS 1.2 file's records as they were, undocumented extra bytes, values added", "[las][io][las-out]")
+{
+  Las_file f;
+  f.minor = 2;
+  f.format = 1;
+  f.extra_bytes = 3;
+  f.offset[0] = 1000.;
+  f.points = sample_points(f.format, 50);
+  const std::string input = write_bytes("out_1_2.las", f.bytes());
+  const SN::Las_output_layout l = SN::las_output_layout_like(input, ADDED);
+  CHECK(l.copied_record_length == 31);
+  CHECK(l.record_length == 31 + 4 + 1 + 2);
+  CHECK(l.added_offsets == std::vector<std::uint16_t>{31, 35, 36});
+  const std::string out = write_with_values(input, las_scratch() + "/out_1_2.out.las", ADDED);
+
+  const SN::Las_header h = SN::read_las_header(las_scratch() + "/out_1_2.out.las");
+  CHECK(h.version_minor == 4);
+  CHECK(h.header_size == 375);
+  CHECK(h.point_format == 1);
+  CHECK(h.record_length == 38);
+  CHECK(h.point_count == 50);
+  CHECK(get<std::uint32_t>(out, 107) == 50); // the legacy count of a legacy format
+  CHECK(out.compare(26, 12, "MODIFICATION") == 0);
+  CHECK(out.compare(58, 21, "Sigmoid_neighborhoods") == 0);
+  const SN::Las_header in = SN::read_las_header(input);
+  CHECK(h.min == in.min);
+  CHECK(h.max == in.max);
+  CHECK(h.scale == in.scale);
+  CHECK(h.offset == in.offset);
+  std::array<std::uint64_t, 15> by_return{};
+  for(const Las_point& p : f.points)
+    ++by_return[p.return_number - 1];
+  for(std::size_t r = 0; r < 15; ++r)
+    CHECK(get<std::uint64_t>(out, 255 + 8 * r) == by_return[r]);
+  for(std::size_t r = 0; r < 5; ++r)
+    CHECK(get<std::uint32_t>(out, 111 + 4 * r) == by_return[r]);
+
+  const auto descriptors = extra_bytes_descriptors(out);
+  REQUIRE(descriptors.size() == 4);
+  CHECK(descriptors[0] == std::make_tuple(0, 3, std::string("undocumented")));
+  CHECK(descriptors[1] == std::make_tuple(9, 0, std::string("value")));
+  CHECK(descriptors[2] == std::make_tuple(1, 0, std::string("count")));
+  CHECK(descriptors[3] == std::make_tuple(4, 0x18, std::string("scaled")));
+
+  const std::string records_in = file_bytes(input).substr(in.offset_to_point_data);
+  SN::read_las_records(las_scratch() + "/out_1_2.out.las", [&](std::size_t first, const unsigned char* r, std::size_t n) {
+    for(std::size_t i = first; i < first + n; ++i, r += 38)
+    {
+      CHECK(std::memcmp(r, records_in.data() + 31 * i, 31) == 0);
+      CHECK(SN::load_little_endian<float>(r + 31) == float(0.5 * double(i)));
+      CHECK(r[35] == i);
+      CHECK(SN::load_little_endian<std::int16_t>(r + 36) == std::int16_t(std::nearbyint(0.01 * double(i) / 0.01)));
+    }
+  });
+  const SN::Oriented_point_set a = SN::read_oriented_point_set(input, 0), b = SN::read_oriented_point_set(las_scratch() + "/out_1_2.out.las", 0);
+  CHECK(a.points == b.points);
+  CHECK(a.labels == b.labels);
+  CHECK(a.gps_times == b.gps_times);
+}
+
+TEST_CASE("LAS out: a LAS 1.4 file's Extra Bytes record, VLRs and EVLRs carried over", "[las][io][las-out]")
+{
+  Las_file f;
+  f.minor = 4;
+  f.format = 6;
+  f.extra_bytes = 2;
+  f.vlr_bytes = 54 + 192 + 54 + 7;
+  f.points = sample_points(f.format, 20);
+  std::string bytes = f.bytes();
+  put<std::uint32_t>(bytes, 100, 2);
+  std::size_t at = 375; // an Extra Bytes record of a uint16 "height", then a VLR of 7 bytes
+  bytes.replace(at + 2, 9, "LASF_Spec");
+  put<std::uint16_t>(bytes, at + 18, 4);
+  put<std::uint16_t>(bytes, at + 20, 192);
+  put<std::uint8_t>(bytes, at + 54 + 2, 3);
+  bytes.replace(at + 54 + 4, 6, "height");
+  at += 54 + 192;
+  bytes.replace(at + 2, 8, "someone!");
+  put<std::uint16_t>(bytes, at + 18, 77);
+  put<std::uint16_t>(bytes, at + 20, 7);
+  bytes.replace(at + 54, 7, "payload");
+  const std::size_t evlr_start = bytes.size();
+  std::string evlr(60 + 5, char(0));
+  evlr.replace(2, 4, "evlr");
+  evlr.replace(60, 5, "tail!");
+  bytes += evlr;
+  put<std::uint64_t>(bytes, 235, evlr_start);
+  put<std::uint32_t>(bytes, 243, 1);
+  const std::string input = write_bytes("out_1_4.las", bytes);
+
+  const std::string out = write_with_values(input, las_scratch() + "/out_1_4.out.las", ADDED);
+  const auto descriptors = extra_bytes_descriptors(out);
+  REQUIRE(descriptors.size() == 4);
+  CHECK(descriptors[0] == std::make_tuple(3, 0, std::string("height")));
+  CHECK(std::get<2>(descriptors[3]) == "scaled");
+  CHECK(get<std::uint32_t>(out, 100) == 2); // the other VLR, then the Extra Bytes record
+  CHECK(out.compare(375 + 2, 8, "someone!") == 0);
+  CHECK(out.compare(375 + 54, 7, "payload") == 0);
+  CHECK(get<std::uint32_t>(out, 107) == 0); // no legacy count in format 6
+  CHECK(get<std::uint64_t>(out, 247) == 20);
+  const std::uint64_t evlrs = get<std::uint64_t>(out, 235);
+  CHECK(evlrs == get<std::uint32_t>(out, 96) + 20 * (30 + 2 + 7));
+  CHECK(get<std::uint32_t>(out, 243) == 1);
+  CHECK(out.substr(evlrs) == evlr);
+}
+
+TEST_CASE("LAS out: new records, the scale rule, the values' conversions, refusals", "[las][io][las-out]")
+{
+  const SN::Las_output_layout unit = SN::las_output_layout_for({{0., 0., 0.}}, {{1., 1., 1.}}, {});
+  CHECK(unit.scale[0] == 1e-9);
+  CHECK(unit.offset == std::array<double, 3>{{0.5, 0.5, 0.5}});
+  CHECK(unit.record_length == 30);
+  CHECK(unit.vlr_count == 0);
+  const SN::Las_output_layout survey = SN::las_output_layout_for({{0., 0., -3.}}, {{2000., 10., 10.}}, ADDED, 7);
+  CHECK(survey.scale == std::array<double, 3>{{1e-6, 1e-6, 1e-6}}); // 1000 / 1e-7 > 2^30 >= 1000 / 1e-6
+  CHECK(survey.copied_record_length == 36);
+  CHECK(survey.record_length == 36 + 7);
+  CHECK(survey.vlr_count == 1);
+  CHECK(SN::las_output_layout_for({{5., 5., 5.}}, {{5., 5., 5.}}, {}).scale[2] == 1e-9);
+
+  unsigned char record[43] = {};
+  const std::array<double, 3> p = {{1234.5678912345, 0.123456789, -2.999999}};
+  SN::store_las_coordinates(record, survey, p);
+  for(int c = 0; c < 3; ++c)
+    CHECK(std::abs(double(SN::load_little_endian<std::int32_t>(record + 4 * c)) * survey.scale[c] + survey.offset[c] - p[c]) <=
+          0.5e-6 * (1 + 1e-9));
+  CHECK_THROWS_AS(SN::store_las_coordinates(record, unit, {{3., 0., 0.}}), std::range_error);
+
+  auto stored = [&](std::size_t j, double v) {
+    SN::store_las_extra(record, survey, j, v);
+    return record + survey.added_offsets[j];
+  };
+  CHECK(*stored(1, 300.) == 255);
+  CHECK(*stored(1, -5.) == 0);
+  CHECK(*stored(1, std::nan("")) == 0);
+  CHECK(*stored(1, 41.6) == 42);
+  CHECK(std::isnan(SN::load_little_endian<float>(stored(0, std::nan("")))));
+  CHECK(SN::load_little_endian<std::int16_t>(stored(2, 100.37)) == 37);
+  CHECK(SN::load_little_endian<std::int16_t>(stored(2, -1e9)) == -32768);
+
+  CHECK_THROWS_AS(SN::las_output_layout_for({{0., 0., 0.}}, {{1., 1., 1.}}, {}, 5), std::invalid_argument);
+  CHECK_THROWS_AS(SN::las_output_layout_for({{0., 0., 0.}}, {{1., std::nan(""), 1.}}, {}), std::invalid_argument);
+  CHECK_THROWS_AS(SN::las_output_layout_for({{0., 0., 0.}}, {{1., 1., 1.}}, {{std::string(33, 'x'), "", SN::Las_extra_bytes_type::FLOAT}}),
+                  std::invalid_argument);
+  CHECK_THROWS_AS(SN::las_output_layout_like(las_scratch() + "/missing.las", {}), SN::Input_error);
 }

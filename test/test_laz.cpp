@@ -80,7 +80,7 @@ std::string sha256(const std::string& bytes)
 std::string decoded_records(const std::string& path, unsigned int threads)
 {
   std::ifstream in(path, std::ios::binary);
-  const SN::internal::Las_header h = SN::internal::read_las_header(in, std::filesystem::file_size(path));
+  const SN::Las_header h = SN::internal::read_las_header(in, std::filesystem::file_size(path));
   std::string records;
   std::size_t next = 0;
   SN::internal::for_each_las_record_block(in, h, threads,
@@ -168,7 +168,7 @@ TEST_CASE("LAZ: every file of the shared data decodes to its records' SHA-256, o
   {
     INFO(f.name);
     const std::string path = LAZ_DIR + f.name;
-    const SN::internal::Las_header h = SN::internal::read_las_header(path);
+    const SN::Las_header h = SN::internal::read_las_header(path);
     CHECK(h.compressed);
     CHECK(h.point_format == f.format);
     CHECK(h.point_count == f.points);
@@ -352,7 +352,7 @@ TEST_CASE("LAZ: damaged files are refused with the chunk named, never a crash", 
   // Chunks of no bytes and of a few, straight to the decoders: the coder reads past its bytes.
   {
     std::ifstream in(LAZ_DIR + "simple.laz", std::ios::binary);
-    const SN::internal::Las_header h = SN::internal::read_las_header(in, std::filesystem::file_size(LAZ_DIR + "simple.laz"));
+    const SN::Las_header h = SN::internal::read_las_header(in, std::filesystem::file_size(LAZ_DIR + "simple.laz"));
     SN::internal::laz::Layout layout = SN::internal::read_laz_layout(in, h);
     REQUIRE(layout.chunk_count() == 1);
     for(std::uint64_t bytes : {std::uint64_t(0), std::uint64_t(h.record_length), std::uint64_t(h.record_length + 5)})

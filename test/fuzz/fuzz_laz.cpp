@@ -36,7 +36,7 @@ std::string records(const std::string& bytes, unsigned int threads)
   std::istringstream in(bytes);
   try
   {
-    const SN::internal::Las_header h = SN::internal::read_las_header(in, bytes.size());
+    const SN::Las_header h = SN::internal::read_las_header(in, bytes.size());
     SN::internal::for_each_las_record_block(in, h, threads, [&](std::size_t, const unsigned char* r, std::size_t n) {
       out.append(reinterpret_cast<const char*>(r), n * h.record_length);
     });

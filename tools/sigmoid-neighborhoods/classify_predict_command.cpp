@@ -9,12 +9,13 @@
 #include "classification/feature_options.h"
 #include "catalog_input.h"
 #include "command_line.h"
+#include "las_output.h"
 #include "phase_times.h"
-
 
 #include <algorithm>
 #include <cstddef>
 #include <functional>
+#include <sstream>
 #include <iostream>
 #include <string>
 #include <utility>
@@ -47,12 +48,69 @@ std::string model_fingerprint(const Classifier_settings& settings, const std::st
   return "model:" + std::to_string(std::hash<std::string>()(settings_json(settings).dump() + forest_bytes));
 }
 
+// The ASPRS code of each class in a LAS output: --class-codes NAME=CODE,..., else the class's first
+// code in the training files (a class trained on codes 3, 4 and 5 is written 3).
+std::vector<int> read_class_codes(const Arguments& args, const Label_mapping& labels)
+{
+  std::vector<int> codes;
+  for(const std::vector<int>& c : labels.codes)
+    codes.push_back(c.empty() ? 1 : c.front());
+  std::stringstream list(args.get("--class-codes"));
+  for(std::string item; std::getline(list, item, ',');)
+  {
+    const std::size_t equal = item.find('=');
+    const auto name = std::find(labels.names.begin(), labels.names.end(), item.substr(0, equal));
+    int code = -1;
+    if(equal != std::string::npos && name != labels.names.end())
+    {
+      const std::string digits = item.substr(equal + 1);
+      if(!digits.empty() && digits.size() <= 3 && digits.find_first_not_of("0123456789") == std::string::npos)
+        code = std::stoi(digits);
+    }
+    if(code < 0 || code > 255)
+      throw Usage_error("--class-codes: '" + item + "' is not NAME=CODE with a class of the model (" + labels.text() +
+                        ") and a code of 0 to 255");
+    codes[std::size_t(name - labels.names.begin())] = code;
+  }
+  return codes;
+}
+
+// The input's records with the predicted class's code as their classification, the class's
+// confidence and the record's own classification as extra bytes dimensions (las_output.h); a point
+// without a class (its features undefined) is written 1, unclassified.
+void write_prediction_las(const std::string& path, const Featured_file& file, const Prediction& p,
+                          const std::vector<int>& codes, unsigned int threads)
+{
+  typedef CGAL::Sigmoid_neighborhoods::Las_extra_bytes_type Type;
+  Las_results r;
+  r.dimensions = {{"confidence", "predicted class's confidence", Type::FLOAT},
+                  {"original_class", "classification before", Type::UNSIGNED_CHAR}};
+  bool checked = false;
+  r.complete = [&](unsigned char* record, const CGAL::Sigmoid_neighborhoods::Las_output_layout& l, std::size_t i) {
+    if(!checked && !l.has_extended_format())
+      for(int code : codes)
+        if(code > 31)
+          throw Usage_error(file.path + ": point data format " + std::to_string(l.point_format) +
+                            " holds classes 0 to 31, and the model writes " + std::to_string(code) +
+                            ": give --class-codes NAME=CODE,... of 31 at most");
+    checked = true;
+    const int c = p.classes[i];
+    const std::size_t field = l.has_extended_format() ? 16 : 15;
+    const unsigned int original = l.has_extended_format() ? record[16] : (record[15] & 0x1F);
+    const unsigned int code = c < 0 ? 1u : unsigned(codes[std::size_t(c)]);
+    record[field] = l.has_extended_format() ? std::uint8_t(code) : std::uint8_t((record[15] & 0xE0) | code);
+    CGAL::Sigmoid_neighborhoods::store_las_extra(record, l, 0, c < 0 ? 0. : double(p.confidence[std::size_t(c)][i]));
+    CGAL::Sigmoid_neighborhoods::store_las_extra(record, l, 1, double(original));
+  };
+  write_las_results(path, file.path, file.model, r, threads);
+}
+
 } // namespace
 
 int run_classify_predict(int argc, char** argv)
 {
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT + 1,
-                       with_catalog_options({"-o", "--output", "--graphcut", "--threads"}), {"-h", "--help"});
+                       with_catalog_options({"-o", "--output", "--graphcut", "--threads", "--class-codes"}), {"-h", "--help"});
   if(print_help(args, CLASSIFY_USAGE))
   {
     std::cout << CATALOG_USAGE;
@@ -62,13 +120,15 @@ int run_classify_predict(int argc, char** argv)
     throw Usage_error("classify predict needs MODEL INPUT, or MODEL --catalog SOURCE");
   const std::string output = args.output();
   if(output.empty())
-    throw Usage_error("classify predict needs -o OUT.ply");
+    throw Usage_error("classify predict needs -o OUT.ply or -o OUT.las");
+  refuse_las_output_of_catalog(args, "classify predict");
   const std::string& model_path = args.positional()[0];
   std::string forest_bytes;
   Classifier_settings settings = read_classifier_settings(model_path, forest_bytes);
   const std::string model = model_fingerprint(settings, forest_bytes);
   settings.features.threads = settings.normals.threads = read_threads(args);
   const double graphcut = read_graphcut(args);
+  const std::vector<int> class_codes = read_class_codes(args, settings.labels);
   if(args.has("--tile"))
     refuse_inexact_tile(settings, graphcut);
   Phase_times times;
@@ -109,7 +169,10 @@ int run_classify_predict(int argc, char** argv)
   const Prediction p = predict(file, settings, forest_bytes, nullptr, graphcut);
   times.end("forest");
   times.move("forest", "forest loading", p.seconds_loading);
-  write_prediction_ply(output, file, p, settings.labels, in.first, in.last);
+  if(is_las_output(output))
+    write_prediction_las(output, file, p, class_codes, settings.features.threads);
+  else
+    write_prediction_ply(output, file, p, settings.labels, in.first, in.last);
   times.end("writing");
   write_tile_description(output, "classify predict", args, in, times, model);
   end_progress();

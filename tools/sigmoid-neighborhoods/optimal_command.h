@@ -10,6 +10,7 @@
 #include "command_line.h"
 #include "model_input.h"
 #include "phase_times.h"
+#include "las_output.h"
 #include "ply_output.h"
 #include "text_rows.h"
 
@@ -32,11 +33,14 @@ namespace sigmoid_tool {
 namespace SN = CGAL::Sigmoid_neighborhoods;
 
 inline const char* OPTIMAL_USAGE =
-  "usage: sigmoid-neighborhoods optimal INPUT|--catalog SOURCE [--tile NAME] -o OUT.csv [--ply OUT.ply]\n"
+  "usage: sigmoid-neighborhoods optimal INPUT|--catalog SOURCE [--tile NAME] -o OUT.csv|OUT.las [--ply OUT.ply]\n"
   "         [--color error|label|none]"
   " [--k-min 6] [--k-max 20] [--a-grid ANGLES] [--b-grid ANGLES] [--barycenter weighted|unweighted]\n"
   "         [--angle-tolerance 1e-6] [--criterion dimensionality|eigenentropy] [--threads N] [normals]\n"
-  "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply; normals estimated when absent)\n"
+  "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply .las .laz; normals estimated when\n"
+  "      absent)\n"
+  "  -o OUT.las: LAS 1.4, the input's LAS/LAZ records untouched (format 6 for other inputs) with the CSV's\n"
+  "      columns as extra bytes dimensions (normal_x/y/z, a, b, error... float; k, label, k_equal integers)\n"
   "  --ply: a binary PLY point cloud: the CSV's columns as properties scalar_<column> (CloudCompare's\n"
   "      scalar fields), quality = error and red green blue (MeshLab)\n"
   "  --criterion: what the search minimises, E_dim (dimensionality, the default) or the eigenentropy\n"
@@ -203,6 +207,43 @@ inline void write_optimal_ply(std::ostream& out, const SN::Oriented_point_set& m
   write_binary_ply(out, ps);
 }
 
+// The CSV's columns as extra bytes dimensions of the input's records (las_output.h): normals and
+// the values float (single precision, as the viewers read them), k, label and k_equal integers of
+// the fewest bytes that hold --k-max.
+inline void write_optimal_las(const std::string& path, const std::string& source, const SN::Oriented_point_set& model,
+                              const std::vector<SN::Optimal_sigmoid_neighborhood>& records, const Search_options& o)
+{
+  typedef SN::Las_extra_bytes_type Type;
+  const Type count = o.k_max <= 255 ? Type::UNSIGNED_CHAR : Type::UNSIGNED_SHORT;
+  Las_results r;
+  r.dimensions = {{"normal_x", "unit normal, x", Type::FLOAT},
+                  {"normal_y", "unit normal, y", Type::FLOAT},
+                  {"normal_z", "unit normal, z", Type::FLOAT},
+                  {"a", "optimal sigmoid a, radians", Type::FLOAT},
+                  {"b", "optimal sigmoid b, radians", Type::FLOAT},
+                  {"k", "optimal neighbors (0: failure)", count},
+                  {"error", "E_dim at the optimum", Type::FLOAT},
+                  {"linearity", "linearity at the optimum", Type::FLOAT},
+                  {"planarity", "planarity at the optimum", Type::FLOAT},
+                  {"scattering", "scattering at the optimum", Type::FLOAT},
+                  {"label", "0 lin. 1 plan. 2 scat. 3 degen.", Type::UNSIGNED_CHAR},
+                  {"error_equal", "E_dim, equal weights", Type::FLOAT},
+                  {"k_equal", "its neighbors (0: failure)", count}};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  r.complete = [&](unsigned char* record, const SN::Las_output_layout& l, std::size_t i) {
+    const auto& n = model.normals[i];
+    const auto& q = records[i];
+    const bool failed = q.is_failure();
+    const double values[] = {n.x(), n.y(), n.z(), q.a, q.b, double(q.k), q.error(),
+                             failed ? nan : q.features.linearity, failed ? nan : q.features.planarity,
+                             failed ? nan : q.features.scattering, double(q.features.label), q.error_equal,
+                             double(q.k_equal)};
+    for(std::size_t j = 0; j < l.added.size(); ++j)
+      SN::store_las_extra(record, l, j, values[j]);
+  };
+  write_las_results(path, source, model, r, o.threads);
+}
+
 inline int run_optimal(int argc, char** argv)
 {
   const Arguments args(argc, argv, FIRST_COMMAND_ARGUMENT,
@@ -219,6 +260,7 @@ inline int run_optimal(int argc, char** argv)
   if(csv.empty())
     throw Usage_error("optimal needs -o OUT.csv");
   const std::string ply = args.get("--ply");
+  refuse_las_output_of_catalog(args, "optimal");
   Search_options options = read_search_options(args);
   try
   {
@@ -243,9 +285,12 @@ inline int run_optimal(int argc, char** argv)
   for(std::size_t i = in.first; i < in.last; ++i)
     failures += records[i].is_failure();
 
-  write_file_atomically(csv, [&](std::ofstream& out) {
-    write_optimal_csv(out, model, records, options.threads, in.first, in.last);
-  });
+  if(is_las_output(csv))
+    write_optimal_las(csv, in.source, model, records, options);
+  else
+    write_file_atomically(csv, [&](std::ofstream& out) {
+      write_optimal_csv(out, model, records, options.threads, in.first, in.last);
+    });
   if(!ply.empty())
     write_file_atomically(
       ply, [&](std::ofstream& out) { write_optimal_ply(out, model, records, colors, in.first, in.last); }, true);

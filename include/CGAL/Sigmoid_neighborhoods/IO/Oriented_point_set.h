@@ -56,6 +56,10 @@ struct Oriented_point_set
   std::size_t zero_normals = 0;
   std::size_t input_vertices = 0;       ///< vertices or points in the file
   std::size_t merged_duplicates = 0;    ///< merged into an earlier point at the same position
+  /// per point of the file, the index in `points` of its position, when `merged_duplicates` is not 0
+  /// (a point set read from a file); else empty: the file's point `i` is `points[i]` (a LAS writer
+  /// gives each record of the file the results of its point)
+  std::vector<std::size_t> point_of_input;
   std::size_t dropped_vertices = 0;     ///< mesh vertices without a face or with an undefined normal
   /// the k-nearest-neighbor rows of the estimation (`Normal_options::kept_neighbors`), for the named
   /// parameters `neighbor_indices` and `neighbor_offsets` of the steps after; empty when none kept

@@ -42,6 +42,8 @@ inline Merged_positions merge_duplicate_points(Oriented_point_set& out, bool has
   keep_first_of_merged(out.numbers_of_returns, merged);
   keep_first_of_merged(out.gps_times, merged);
   out.merged_duplicates = merged.merged;
+  if(merged.merged != 0)
+    out.point_of_input = merged.position_of;
   return merged;
 }
 

@@ -7,6 +7,7 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_READ_LAS_H
 
 #include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/Las_header.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/Byte_budget.h>
@@ -63,26 +64,6 @@ constexpr unsigned int LAS_FORMAT_BITS = 0x3F;
 constexpr std::size_t LAS_CHUNK_BYTES = std::size_t(1) << 22; // records read at a time
 
 inline std::string las_error(const std::string& reason) { return "cannot parse the file as las (" + reason + ")"; }
-
-// What the public header block of a LAS file says, checked: the points it announces lie within the file.
-struct Las_header
-{
-  unsigned int version_major = 0, version_minor = 0;
-  std::uint16_t header_size = 0;
-  std::uint32_t offset_to_point_data = 0;
-  std::uint32_t vlr_count = 0;
-  bool compressed = false;         // LAZ: the points in LASzip's chunks
-  unsigned int point_format = 0;   // 0 to 10
-  std::uint16_t record_length = 0; // at least LAS_POINT_RECORD_BYTES[point_format]
-  std::uint64_t point_count = 0;   // the 64-bit count of LAS 1.4 when not 0, else the legacy one
-  std::array<double, 3> scale{{0., 0., 0.}}, offset{{0., 0., 0.}};
-  std::array<double, 3> min{{0., 0., 0.}}, max{{0., 0., 0.}}; // the bounding box, as written (unchecked)
-  std::uintmax_t file_size = 0;
-
-  bool has_extended_format() const { return point_format >= LAS_FIRST_EXTENDED_FORMAT; }
-  bool has_gps_time() const { return point_format != 0 && point_format != 2; }
-  std::size_t gps_time_offset() const { return has_extended_format() ? 22 : 20; }
-};
 
 // The header of a LAS file of `file_size` bytes read from `in`, at its start, or Input_error.
 inline Las_header read_las_header(std::istream& in, std::uintmax_t file_size)

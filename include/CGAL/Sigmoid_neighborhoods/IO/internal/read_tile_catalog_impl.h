@@ -111,7 +111,7 @@ read_tile_catalog(const std::string& folder_or_list)
     {
       if(lower_case_extension(path) == "las" || lower_case_extension(path) == "laz")
       {
-        const internal::Las_header h = internal::read_las_header(path);
+        const Las_header h = internal::read_las_header(path);
         for(int c = 0; c < 2; ++c)
           if(!(std::isfinite(h.min[c]) && std::isfinite(h.max[c])))
             throw Input_error("the header's bounding box is not finite");

@@ -1,0 +1,163 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s): Sigmoid_neighborhoods contributors
+
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_LAS_WRITER_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_IO_LAS_WRITER_H
+
+#include <CGAL/Sigmoid_neighborhoods/IO/Las_output_layout.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <ios>
+#include <limits>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  what the public header block of a LAS 1.4 file says of the point records after it, summed up
+  as they are written: their count, their count by return number and their bounding box.
+*/
+struct Las_point_summary
+{
+  std::uint64_t count = 0; ///< records
+  std::array<std::uint64_t, 15> by_return{}; ///< records of return numbers 1 to 15 (0 counts nowhere)
+  /// the smallest integer coordinates
+  std::array<std::int32_t, 3> min{{(std::numeric_limits<std::int32_t>::max)(), (std::numeric_limits<std::int32_t>::max)(),
+                                   (std::numeric_limits<std::int32_t>::max)()}};
+  /// the largest integer coordinates
+  std::array<std::int32_t, 3> max{{(std::numeric_limits<std::int32_t>::min)(), (std::numeric_limits<std::int32_t>::min)(),
+                                   (std::numeric_limits<std::int32_t>::min)()}};
+
+  /// adds the record `record`, of a point format 6 to 10 when `extended_format`
+  void add(const unsigned char* record, bool extended_format)
+  {
+    ++count;
+    for(int c = 0; c < 3; ++c)
+    {
+      const std::int32_t v = load_little_endian<std::int32_t>(record + 4 * c);
+      min[c] = (std::min)(min[c], v);
+      max[c] = (std::max)(max[c], v);
+    }
+    const unsigned int return_number = extended_format ? (record[14] & 0x0F) : (record[14] & 0x07);
+    if(return_number >= 1)
+      ++by_return[return_number - 1];
+  }
+};
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  writes a LAS 1.4 file laid out by a `Las_output_layout`: its header and VLRs when made, the
+  point records given to `write()` in order, and on `close()` the EVLRs and the header's counts,
+  counts by return and bounding box (LAS 1.4 rules: the 64-bit counts always; the legacy 32-bit ones
+  equal to them in point formats 0 to 5 while they fit, else 0). The stream must be seekable (a
+  file): `close()` rewrites the header. Memory: the layout only; the records stay the caller's.
+*/
+class Las_writer
+{
+public:
+  /// writes the header and the VLRs of `layout` to `out`
+  Las_writer(std::ostream& out, Las_output_layout layout) : m_out(out), m_layout(std::move(layout))
+  {
+    write_header();
+    m_out.write(reinterpret_cast<const char*>(m_layout.vlrs.data()), std::streamsize(m_layout.vlrs.size()));
+    check("the header");
+  }
+
+  /// the layout written
+  const Las_output_layout& layout() const { return m_layout; }
+
+  /// writes `count` records of `layout().record_length` bytes each, in order
+  void write(const unsigned char* records, std::size_t count)
+  {
+    for(std::size_t i = 0; i < count; ++i)
+      m_summary.add(records + i * m_layout.record_length, m_layout.has_extended_format());
+    m_out.write(reinterpret_cast<const char*>(records), std::streamsize(count * m_layout.record_length));
+    check("the point records");
+  }
+
+  /// what the records written so far sum up to
+  const Las_point_summary& summary() const { return m_summary; }
+
+  /// writes the EVLRs and the header's summary of the records; the file is complete
+  void close()
+  {
+    m_out.write(reinterpret_cast<const char*>(m_layout.evlrs.data()), std::streamsize(m_layout.evlrs.size()));
+    const std::streampos end = m_out.tellp();
+    m_out.seekp(0);
+    write_header();
+    m_out.seekp(end);
+    check("the header's point counts");
+  }
+
+private:
+  void check(const char* what)
+  {
+    if(!m_out)
+      throw std::ios_base::failure(std::string("cannot write ") + what + " of the LAS file");
+  }
+
+  void write_header()
+  {
+    std::array<unsigned char, Las_output_layout::HEADER_BYTES> h = m_layout.header;
+    unsigned char* b = h.data();
+    const Las_point_summary& p = m_summary;
+    b[24] = 1;
+    b[25] = 4;
+    store_little_endian<std::uint16_t>(b + 94, std::uint16_t(h.size()));
+    const std::uint64_t point_data = h.size() + m_layout.vlrs.size();
+    if(point_data > (std::numeric_limits<std::uint32_t>::max)())
+      throw std::length_error("variable length records of " + std::to_string(m_layout.vlrs.size()) +
+                              " bytes: a LAS header points past them with 32 bits");
+    store_little_endian<std::uint32_t>(b + 96, std::uint32_t(point_data));
+    store_little_endian<std::uint32_t>(b + 100, m_layout.vlr_count);
+    b[104] = std::uint8_t(m_layout.point_format);
+    store_little_endian<std::uint16_t>(b + 105, m_layout.record_length);
+    const bool legacy = !m_layout.has_extended_format() && p.count <= (std::numeric_limits<std::uint32_t>::max)();
+    store_little_endian<std::uint32_t>(b + 107, legacy ? std::uint32_t(p.count) : 0u);
+    for(std::size_t r = 0; r < 5; ++r)
+      store_little_endian<std::uint32_t>(b + 111 + 4 * r, legacy ? std::uint32_t(p.by_return[r]) : 0u);
+    for(int c = 0; c < 3; ++c)
+    {
+      double low = 0., high = 0.;
+      if(p.count != 0)
+      {
+        // as a reader computes them, integer * scale + offset; a negative scale swaps the ends
+        const double a = double(p.min[c]) * m_layout.scale[c] + m_layout.offset[c];
+        const double z = double(p.max[c]) * m_layout.scale[c] + m_layout.offset[c];
+        low = (std::min)(a, z);
+        high = (std::max)(a, z);
+      }
+      store_little_endian<double>(b + 179 + 16 * c, high);
+      store_little_endian<double>(b + 187 + 16 * c, low);
+    }
+    const std::uint64_t evlrs = point_data + p.count * m_layout.record_length;
+    const bool has_waveforms = m_layout.waveforms_in_evlrs != Las_output_layout::NO_WAVEFORMS;
+    store_little_endian<std::uint64_t>(b + 227, has_waveforms ? evlrs + m_layout.waveforms_in_evlrs : 0u);
+    store_little_endian<std::uint64_t>(b + 235, m_layout.evlr_count != 0 ? evlrs : 0u);
+    store_little_endian<std::uint32_t>(b + 243, m_layout.evlr_count);
+    store_little_endian<std::uint64_t>(b + 247, p.count);
+    for(std::size_t r = 0; r < 15; ++r)
+      store_little_endian<std::uint64_t>(b + 255 + 8 * r, p.by_return[r]);
+    m_out.write(reinterpret_cast<const char*>(b), std::streamsize(h.size()));
+  }
+
+  std::ostream& m_out;
+  Las_output_layout m_layout;
+  Las_point_summary m_summary;
+};
+
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
+
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_LAS_WRITER_H

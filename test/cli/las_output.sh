@@ -1,0 +1,98 @@
+#!/bin/sh
+# Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+#
+# LAS output (-o OUT.las) of optimal and classify predict, read by check_las_output.py (numpy alone):
+# every record of the input as it was but the classification, the header's summary right, the
+# results as described extra bytes dimensions equal to the CSV's columns and the PLY's classes, on
+# the six IGN tiles and on the LAS and LAZ files of ../shared/data/laz (LAS 1.2 to 1.4, extra bytes,
+# EVLRs); a LAZ input gives the LAS twin's output byte for byte; an output read again by the tool
+# gives the input's results; a point set of another format gets format 6 records within half a
+# scale unit. The refusals exit 2 with one line and write nothing.
+# usage: las_output.sh TOOL SHARED_DATA_FOLDER PYTHON CHECKER
+set -eu
+tool=$1
+data=$2
+python=$3
+checker=$4
+dir=las-output-test
+rm -rf "$dir" && mkdir -p "$dir"
+. "$(dirname "$0")/refusals.sh"
+search="--k-max 10 --a-grid 0,pi --b-grid 0,pi"
+columns="normal_x=nx normal_y=ny normal_z=nz a b k error linearity planarity scattering error_equal k_equal"
+
+# optimal: the CSV's columns, on LAS 1.2, 1.4 with EVLRs and extra bytes described by the input
+for name in simple 1_4_w_evlr extrabytes; do
+  "$tool" optimal "$data/laz/$name.las" -o "$dir/$name.csv" $search 2> /dev/null || fail "optimal $name (CSV)"
+  "$tool" optimal "$data/laz/$name.las" -o "$dir/$name.las" $search 2> /dev/null || fail "optimal $name (LAS)"
+  "$python" "$checker" "$dir/$name.las" "$data/laz/$name.las" --csv "$dir/$name.csv" $columns > "$dir/names.txt" \
+    || fail "optimal $name: the LAS output"
+  grep -q "^normal_x,normal_y,normal_z,a,b,k,error,linearity,planarity,scattering,label,error_equal,k_equal$" \
+    "$dir/names.txt" || fail "optimal $name: the added dimensions: $(cat "$dir/names.txt")"
+done
+# every LAZ file under 1 MB (point-wise and layered, extra bytes, EVLRs, COPC): the output read again
+# gives the input's results, byte for byte
+for laz in $(find "$data/laz" -name "*.laz" -size -1000k | sort); do
+  name=$(basename "$laz" .laz).laz
+  "$tool" optimal "$laz" -o "$dir/$name.in.csv" $search 2> /dev/null || continue # refused inputs: other tests
+  "$tool" optimal "$laz" -o "$dir/$name.las" $search 2> /dev/null || fail "optimal $name: no LAS output"
+  "$tool" optimal "$dir/$name.las" -o "$dir/$name.again.csv" $search 2> /dev/null || fail "$name: output unread"
+  cmp "$dir/$name.in.csv" "$dir/$name.again.csv" || fail "$name: the LAS output does not read as its input"
+done
+
+# classify predict on the six IGN tiles: the PLY's classes as ASPRS codes
+tiles="77050_627755 77050_627760 77055_627755 77055_627760 77060_627755 77060_627760"
+"$tool" classify train "$data/labeled/ign_lidarhd_77050_627755.las" -o "$dir/model.bin" --features k20,height \
+  --trees 3 --depth 8 2> /dev/null || fail "classify train"
+codes="--class-codes ground=2,low_vegetation=3,high_vegetation=5,building=6"
+for tile in $tiles; do
+  input="$data/labeled/ign_lidarhd_$tile.las"
+  "$tool" classify predict "$dir/model.bin" "$input" -o "$dir/p_$tile.ply" 2> /dev/null || fail "predict $tile (PLY)"
+  "$tool" classify predict "$dir/model.bin" "$input" -o "$dir/p_$tile.las" $codes 2> /dev/null \
+    || fail "predict $tile (LAS)"
+  "$python" "$checker" "$dir/p_$tile.las" "$input" --changed classification --classes "$dir/p_$tile.ply" 2,3,5,6 \
+    > "$dir/names.txt" || fail "predict $tile: the LAS output"
+  grep -q "^confidence,original_class$" "$dir/names.txt" || fail "predict $tile: $(cat "$dir/names.txt")"
+  "$python" "$checker" "$dir/p_$tile.las" "$input" --changed classification --values original_class \
+    > "$dir/original.txt"
+  [ "$(sort -u "$dir/original.txt" | tr '\n' ' ')" != "0 " ] || fail "predict $tile: no original class kept"
+done
+twin="$data/laz/test_data_77050_627760_LA93_IGN69.laz"
+"$tool" classify predict "$dir/model.bin" "$twin" -o "$dir/p_laz.las" $codes 2> /dev/null || fail "predict on LAZ"
+cmp "$dir/p_laz.las" "$dir/p_77050_627760.las" || fail "predict: a LAZ input and its LAS twin give different outputs"
+# a legacy point format (classes 0 to 31): the model's codes fit
+"$tool" classify predict "$dir/model.bin" "$data/laz/simple.las" -o "$dir/p_simple.las" $codes 2> /dev/null \
+  || fail "predict on a LAS 1.2 file"
+"$python" "$checker" "$dir/p_simple.las" "$data/laz/simple.las" --changed classification > /dev/null \
+  || fail "predict on a LAS 1.2 file: the LAS output"
+
+# a point set of another format: new records, coordinates within half a unit of the scale
+"$python" -c "
+import numpy as np
+points = np.random.default_rng(1).normal(size=(2000, 3))
+points = points / np.linalg.norm(points, axis=1)[:, None] * 3.7 + [1000.25, -20., 5.]
+np.savetxt('$dir/sphere.xyz', points, fmt='%.17g')"
+"$tool" optimal "$dir/sphere.xyz" -o "$dir/sphere.csv" $search 2> /dev/null || fail "optimal sphere (CSV)"
+"$tool" optimal "$dir/sphere.xyz" -o "$dir/sphere.las" $search 2> /dev/null || fail "optimal sphere (LAS)"
+"$tool" optimal "$dir/sphere.las" -o "$dir/sphere.again.csv" $search 2> /dev/null || fail "sphere: output unread"
+"$python" -c "
+import numpy as np, struct, sys
+a = np.genfromtxt('$dir/sphere.csv', delimiter=',', names=True)
+b = np.genfromtxt('$dir/sphere.again.csv', delimiter=',', names=True)
+header = open('$dir/sphere.las', 'rb').read(375)
+scale = struct.unpack_from('<3d', header, 131)
+assert header[104] == 6 and header[26:31] == b'OTHER', 'format 6, system OTHER'
+assert scale == (1e-8,) * 3, scale  # half extent 3.7: the smallest power of ten for which it takes 2^30 units
+assert len(a) == len(b) and all(np.abs(a[c] - b[c]).max() <= 0.5e-8 * 1.0001 for c in 'xyz'), 'coordinates'
+" || fail "a point set's LAS output"
+
+# refusals
+expect_refusal "LAZ output is not written yet" "$tool" optimal "$data/laz/simple.las" -o "$dir/x.laz" $search
+expect_refusal "of 31 at most" "$tool" classify predict "$dir/model.bin" "$data/laz/simple.las" -o "$dir/x.las" \
+  --class-codes ground=40
+expect_refusal "is not NAME=CODE" "$tool" classify predict "$dir/model.bin" "$data/laz/simple.las" -o "$dir/x.las" \
+  --class-codes water=9
+expect_refusal "LAS output of a catalog" "$tool" optimal --catalog "$data/laz" -o "$dir/x.las" $search
+[ ! -e "$dir/x.las" ] && [ ! -e "$dir/x.laz" ] || fail "a refused command wrote its output"
+ls "$dir" | grep -q "\.tmp\." && fail "a temporary file left behind"
+echo "las-output-ok"

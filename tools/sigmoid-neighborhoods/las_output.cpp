@@ -1,0 +1,152 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The commands' LAS outputs (las_output.h).
+
+#include "las_output.h"
+
+#include "command_line.h"
+
+#include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/Las_writer.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/read_las_records.h>
+
+#include <CGAL/Bbox_3.h>
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <fstream>
+#include <ios>
+#include <limits>
+#include <stdexcept>
+
+namespace sigmoid_tool {
+
+namespace SN = CGAL::Sigmoid_neighborhoods;
+
+bool is_las_output(const std::string& path)
+{
+  const std::string ext = SN::lower_case_extension(path);
+  if(ext == "laz")
+    throw Usage_error(path + ": LAZ output is not written yet: name a .las file (LAS 1.4, the input's records "
+                             "with the results as extra bytes dimensions) and compress it with 'laszip' or "
+                             "'pdal translate'");
+  return ext == "las";
+}
+
+void refuse_las_output_of_catalog(const Arguments& args, const std::string& command)
+{
+  if(args.has("--catalog") && is_las_output(args.output()))
+    throw Usage_error(command + " --catalog: LAS output of a catalog or its tiles is not written yet; write this "
+                                "command's other output, or give the tile's file as INPUT");
+}
+
+namespace {
+
+// One record per point, point format 6: the coordinates at the layout's scale, return 1 of 1, the
+// point's label as its classification when it fits (0 to 255), the rest zero.
+void write_new_records(SN::Las_writer& writer, const SN::Oriented_point_set& model, const Las_results& results)
+{
+  const SN::Las_output_layout& l = writer.layout();
+  constexpr std::size_t BLOCK = 65536;
+  std::vector<unsigned char> block;
+  for(std::size_t first = 0; first < model.points.size(); first += BLOCK)
+  {
+    const std::size_t count = (std::min)(BLOCK, model.points.size() - first);
+    block.assign(count * l.record_length, 0);
+    for(std::size_t i = 0; i < count; ++i)
+    {
+      unsigned char* record = block.data() + i * l.record_length;
+      const auto& p = model.points[first + i];
+      SN::store_las_coordinates(record, l, {{p.x(), p.y(), p.z()}});
+      record[14] = 0x11;
+      if(!model.labels.empty() && model.labels[first + i] >= 0 && model.labels[first + i] <= 255)
+        record[16] = std::uint8_t(model.labels[first + i]);
+      results.complete(record, l, first + i);
+    }
+    writer.write(block.data(), count);
+  }
+}
+
+// The records of the LAS or LAZ file `source`, each completed with its point's values.
+void write_copied_records(SN::Las_writer& writer, const std::string& source, const SN::Oriented_point_set& model,
+                          const Las_results& results, unsigned int threads)
+{
+  const SN::Las_output_layout& l = writer.layout();
+  const std::size_t inputs = model.point_of_input.empty() ? model.points.size() : model.point_of_input.size();
+  std::vector<unsigned char> block;
+  std::size_t records = 0;
+  const SN::Las_header h = SN::read_las_records(
+    source,
+    [&](std::size_t first, const unsigned char* input, std::size_t count) {
+      if(first + count > inputs)
+        throw Usage_error(source + " holds more records than when it was read: it changed on the way");
+      block.assign(count * l.record_length, 0);
+      for(std::size_t i = 0; i < count; ++i)
+      {
+        unsigned char* record = block.data() + i * l.record_length;
+        std::memcpy(record, input + i * l.copied_record_length, l.copied_record_length);
+        const std::size_t point = model.point_of_input.empty() ? first + i : model.point_of_input[first + i];
+        results.complete(record, l, point);
+      }
+      writer.write(block.data(), count);
+      records = first + count;
+    },
+    threads);
+  if(records != inputs || h.point_count != inputs)
+    throw Usage_error(source + " holds " + std::to_string(h.point_count) + " records, " + std::to_string(inputs) +
+                      " when it was read: it changed on the way");
+}
+
+} // namespace
+
+void write_las_results(const std::string& path, const std::string& source, const SN::Oriented_point_set& model,
+                       const Las_results& results, unsigned int threads)
+{
+  const std::string ext = SN::lower_case_extension(source);
+  try
+  {
+    write_file_atomically(
+      path,
+      [&](std::ofstream& out) {
+        if(ext == "las" || ext == "laz")
+        {
+          SN::Las_writer writer(out, SN::las_output_layout_like(source, results.dimensions));
+          write_copied_records(writer, source, model, results, threads);
+          writer.close();
+          return;
+        }
+        std::array<double, 3> min{{0., 0., 0.}}, max{{0., 0., 0.}};
+        if(!model.points.empty())
+        {
+          const CGAL::Bbox_3 box = CGAL::bbox_3(model.points.begin(), model.points.end());
+          min = {{box.xmin(), box.ymin(), box.zmin()}};
+          max = {{box.xmax(), box.ymax(), box.zmax()}};
+        }
+        SN::Las_writer writer(out, SN::las_output_layout_for(min, max, results.dimensions));
+        write_new_records(writer, model, results);
+        writer.close();
+      },
+      true);
+  }
+  catch(const SN::Input_error& e)
+  {
+    throw Usage_error(source + ": " + e.what());
+  }
+  catch(const std::ios_base::failure& e)
+  {
+    throw Usage_error("cannot write " + path + ": " + e.what());
+  }
+  catch(const std::range_error& e)
+  {
+    throw Usage_error("cannot write " + path + ": " + e.what());
+  }
+  catch(const std::length_error& e)
+  {
+    throw Usage_error("cannot write " + path + ": " + e.what());
+  }
+}
+
+} // namespace sigmoid_tool

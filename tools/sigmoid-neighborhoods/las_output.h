@@ -1,0 +1,48 @@
+// Copyright (c) 2026 Sigmoid_neighborhoods contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The commands' LAS 1.4 outputs: a LAS or LAZ input's records as they are, the results added as
+// extra bytes dimensions (a record merged into an earlier one at its position gets that point's
+// results), or new records (point format 6) for the other formats.
+
+#ifndef SIGMOID_NEIGHBORHOODS_TOOL_LAS_OUTPUT_H
+#define SIGMOID_NEIGHBORHOODS_TOOL_LAS_OUTPUT_H
+
+#include <CGAL/Sigmoid_neighborhoods/IO/Las_output_layout.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace sigmoid_tool {
+
+class Arguments;
+
+// Whether `path` names a LAS output (.las); a .laz output is refused, naming what is written.
+bool is_las_output(const std::string& path);
+
+// Refuses a LAS output of a catalog (its tiles' records would come from several files).
+void refuse_las_output_of_catalog(const Arguments& args, const std::string& command);
+
+// What a command adds to each record: its dimensions, and the values of one point.
+struct Las_results
+{
+  std::vector<CGAL::Sigmoid_neighborhoods::Las_extra_dimension> dimensions;
+  // writes the values of `point` (an index into the model's points) into `record`, laid out by
+  // `layout`: its added dimensions, and any field it changes (the classification)
+  std::function<void(unsigned char* record, const CGAL::Sigmoid_neighborhoods::Las_output_layout& layout,
+                     std::size_t point)>
+    complete;
+};
+
+// Writes `path` atomically: the records of `source` (LAS or LAZ, decoded on `threads`) with `results`,
+// or one record per point of `model` when `source` is another format. Any failure is a Usage_error.
+void write_las_results(const std::string& path, const std::string& source,
+                       const CGAL::Sigmoid_neighborhoods::Oriented_point_set& model, const Las_results& results,
+                       unsigned int threads);
+
+} // namespace sigmoid_tool
+
+#endif // SIGMOID_NEIGHBORHOODS_TOOL_LAS_OUTPUT_H
