@@ -13,7 +13,7 @@
 // written a chunk at a time: the memory does not grow with the survey. The same seed writes the
 // same bytes.
 
-#include "las_writer.h"
+#include <CGAL/Sigmoid_neighborhoods/IO/Las_writer.h>
 
 #include <algorithm>
 #include <chrono>
@@ -24,6 +24,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <ios>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -33,7 +34,7 @@
 
 namespace {
 
-namespace las = sigmoid_tool::las;
+namespace SN = CGAL::Sigmoid_neighborhoods;
 
 const char* const USAGE =
   "usage: generate_survey POINTS DIR [--tile-size S] [--density D] [--seed SEED] [--origin X Y] [--name STEM]\n"
@@ -277,37 +278,23 @@ struct Survey
 const std::string WKT = "LOCAL_CS[\"synthetic survey\",LOCAL_DATUM[\"none\",0],UNIT[\"metre\",1],"
                         "AXIS[\"X\",EAST],AXIS[\"Y\",NORTH]]";
 
-// The public header block and the WKT VLR of a tile, its counts and bounds still to be written.
-std::vector<unsigned char> tile_prefix(const Survey& s)
+// The layout of a tile: point format 6, centimetres from the survey's origin, its CRS as a WKT VLR,
+// a fixed creation date (the files repeat bit for bit).
+SN::Las_output_layout tile_layout(const Survey& s)
 {
-  const std::size_t wkt_bytes = WKT.size() + 1; // with its null
-  std::vector<unsigned char> b(las::HEADER_BYTES_1_4 + las::VLR_HEADER_BYTES + wkt_bytes, 0);
-  std::memcpy(b.data(), "LASF", 4);
-  las::store_little_endian<std::uint16_t>(b.data() + las::GLOBAL_ENCODING, 0x11); // adjusted standard GPS time, WKT
-  b[las::VERSION_MAJOR] = 1;
-  b[las::VERSION_MINOR] = 4;
-  std::strncpy(reinterpret_cast<char*>(b.data() + 26), "synthetic survey", 32);
-  std::strncpy(reinterpret_cast<char*>(b.data() + 58), "generate_survey", 32);
-  las::store_little_endian<std::uint16_t>(b.data() + 90, 1);    // day of the year: fixed, the files repeat bit for bit
-  las::store_little_endian<std::uint16_t>(b.data() + 92, 2026);
-  las::store_little_endian<std::uint16_t>(b.data() + las::HEADER_SIZE, std::uint16_t(las::HEADER_BYTES_1_4));
-  las::store_little_endian<std::uint32_t>(b.data() + las::OFFSET_TO_POINT_DATA, std::uint32_t(b.size()));
-  las::store_little_endian<std::uint32_t>(b.data() + las::NUMBER_OF_VLRS, 1);
-  b[las::POINT_FORMAT] = 6;
-  las::store_little_endian<std::uint16_t>(b.data() + las::RECORD_LENGTH, RECORD_BYTES);
-  const double offsets[3] = {s.origin_x, s.origin_y, 0.};
-  for(int c = 0; c < 3; ++c)
-  {
-    las::store_little_endian<double>(b.data() + las::SCALE + 8 * c, SCALE);
-    las::store_little_endian<double>(b.data() + las::OFFSET + 8 * c, offsets[c]);
-  }
-  unsigned char* vlr = b.data() + las::HEADER_BYTES_1_4;
-  std::strncpy(reinterpret_cast<char*>(vlr + 2), "LASF_Projection", 16);
-  las::store_little_endian<std::uint16_t>(vlr + 18, 2112);
-  las::store_little_endian<std::uint16_t>(vlr + 20, std::uint16_t(wkt_bytes));
-  std::strncpy(reinterpret_cast<char*>(vlr + 22), "OGC WKT", 32);
-  std::memcpy(vlr + las::VLR_HEADER_BYTES, WKT.c_str(), wkt_bytes);
-  return b;
+  SN::Las_output_layout l = SN::las_output_layout_for({{0., 0., 0.}}, {{0., 0., 0.}}, {}, 6);
+  l.scale = {{SCALE, SCALE, SCALE}};
+  l.offset = {{s.origin_x, s.origin_y, 0.}};
+  unsigned char* h = l.header.data();
+  SN::store_little_endian<std::uint16_t>(h + 6, 0x11); // adjusted standard GPS time, WKT
+  std::memset(h + 26, 0, 64);
+  std::strncpy(reinterpret_cast<char*>(h + 26), "synthetic survey", 32);
+  std::strncpy(reinterpret_cast<char*>(h + 58), "generate_survey", 32);
+  SN::store_little_endian<std::uint16_t>(h + 90, 1);
+  SN::store_little_endian<std::uint16_t>(h + 92, 2026);
+  SN::add_las_vlr(l, "LASF_Projection", 2112, "OGC WKT",
+                  std::vector<unsigned char>(WKT.c_str(), WKT.c_str() + WKT.size() + 1)); // with its null
+  return l;
 }
 
 std::string zero_padded(std::int64_t value, int width)
@@ -339,20 +326,20 @@ std::uint64_t write_tile(const Survey& s, const Terrain& terrain, std::int64_t i
   const std::string name = s.stem + "_" + zero_padded(i, width) + "_" + zero_padded(j, width) + ".las";
   const std::string path = (std::filesystem::path(s.folder) / name).string();
   const std::string temporary = path + ".tmp." + std::to_string(::getpid());
-  std::vector<unsigned char> prefix = tile_prefix(s);
   std::ofstream out(temporary, std::ios::binary);
   const auto fail = [&](const std::string& what) {
     out.close();
     std::remove(temporary.c_str());
     return Failure("cannot write " + path + ": " + what + (errno != 0 ? std::string(" (") + std::strerror(errno) + ")" : ""));
   };
-  if(!out.write(reinterpret_cast<const char*>(prefix.data()), std::streamsize(prefix.size())))
-    throw fail("header");
+  std::uint64_t written = 0;
+  try
+  {
+  SN::Las_writer writer(out, tile_layout(s));
 
   // Integer coordinates of the tile's cell, [X0, X0 + cells): every point inside it.
   const std::int64_t cells = std::llround(side / SCALE);
   const std::int64_t first_x = i * cells, first_y = j * cells;
-  las::Point_summary summary;
   std::vector<unsigned char> chunk;
   chunk.reserve(CHUNK_POINTS * RECORD_BYTES);
   Random r(s.seed, SCAN, i, j);
@@ -378,37 +365,38 @@ std::uint64_t write_tile(const Survey& s, const Terrain& terrain, std::int64_t i
           std::clamp<std::int64_t>(std::llround(ret.y / SCALE), first_y, first_y + cells - 1),
           std::llround(ret.z / SCALE)};
         for(int c = 0; c < 3; ++c)
-          las::store_little_endian<std::int32_t>(record + 4 * c, std::int32_t(xyz[c]));
+          SN::store_little_endian<std::int32_t>(record + 4 * c, std::int32_t(xyz[c]));
         const double brightness = ret.label == BUILDING ? 14000. : ret.label == VEGETATION ? 5000. : 9000.;
-        las::store_little_endian<std::uint16_t>(record + 12, std::uint16_t(std::clamp(brightness + 1500. * r.normal(), 0., 65535.)));
+        SN::store_little_endian<std::uint16_t>(record + 12, std::uint16_t(std::clamp(brightness + 1500. * r.normal(), 0., 65535.)));
         record[14] = std::uint8_t(ret.number | (ret.of << 4));
         record[15] = std::uint8_t(backwards ? 0 : 0x40); // scan direction flag
         record[16] = ret.label;
-        las::store_little_endian<std::int16_t>(record + 18, std::int16_t(std::lround((along / side - 0.5) * 20. / 0.006)));
-        las::store_little_endian<std::uint16_t>(record + 20, std::uint16_t(1 + j % 65535)); // a flight line per row of tiles
-        las::store_little_endian<double>(record + 22, gps_time);
-        summary.add(record, true);
+        SN::store_little_endian<std::int16_t>(record + 18, std::int16_t(std::lround((along / side - 0.5) * 20. / 0.006)));
+        SN::store_little_endian<std::uint16_t>(record + 20, std::uint16_t(1 + j % 65535)); // a flight line per row of tiles
+        SN::store_little_endian<double>(record + 22, gps_time);
         chunk.insert(chunk.end(), record, record + RECORD_BYTES);
       }
       if(chunk.size() >= CHUNK_POINTS * RECORD_BYTES)
       {
-        if(!out.write(reinterpret_cast<const char*>(chunk.data()), std::streamsize(chunk.size())))
-          throw fail("points");
+        writer.write(chunk.data(), chunk.size() / RECORD_BYTES);
         chunk.clear();
       }
     }
   }
-  if(!out.write(reinterpret_cast<const char*>(chunk.data()), std::streamsize(chunk.size())))
+  writer.write(chunk.data(), chunk.size() / RECORD_BYTES);
+  writer.close();
+  written = writer.summary().count;
+  }
+  catch(const std::ios_base::failure&)
+  {
     throw fail("points");
-  las::write_point_summary(prefix.data(), las::HEADER_BYTES_1_4, summary);
-  out.seekp(0);
-  out.write(reinterpret_cast<const char*>(prefix.data()), std::streamsize(las::HEADER_BYTES_1_4));
+  }
   out.close();
   if(out.fail())
     throw fail("close");
   if(std::rename(temporary.c_str(), path.c_str()) != 0)
     throw fail("rename");
-  return summary.count;
+  return written;
 }
 
 double number(const std::string& option, const char* text)

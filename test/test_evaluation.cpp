@@ -387,6 +387,14 @@ TEST_CASE("evaluate and optimal: a full disk gives a clear error and leaves no h
   CHECK_FALSE(fs::exists(full / "cube.csv"));
   CHECK_FALSE(fs::exists(full / "cube.ply"));
   CHECK(count_temporary_files(full) == 0);
+  // a LAS output, whose header is written again at its end
+  status = wait_for(spawn_tool({"optimal", mesh, "-o", (full / "cube.las").string()}, out("full.err"), limit_file_size));
+  CHECK(WEXITSTATUS(status) == 2);
+  message = read_text(out("full.err"));
+  CHECK(message.find(std::strerror(EFBIG)) != std::string::npos);
+  CHECK(std::count(message.begin(), message.end(), '\n') == 1);
+  CHECK_FALSE(fs::exists(full / "cube.las"));
+  CHECK(count_temporary_files(full) == 0);
 
   // an output folder that cannot be created: its parent is a file
   std::ofstream(out("a_file")) << "x";

@@ -15,6 +15,7 @@
 #include <CGAL/Bbox_3.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <array>
 #include <cstring>
 #include <fstream>
@@ -106,6 +107,7 @@ void write_las_results(const std::string& path, const std::string& source, const
                        const Las_results& results, unsigned int threads)
 {
   const std::string ext = SN::lower_case_extension(source);
+  errno = 0;
   try
   {
     write_file_atomically(
@@ -137,7 +139,8 @@ void write_las_results(const std::string& path, const std::string& source, const
   }
   catch(const std::ios_base::failure& e)
   {
-    throw Usage_error("cannot write " + path + ": " + e.what());
+    // errno still holds the failed write's reason (ENOSPC, EFBIG, EIO...), as write_file_atomically's
+    throw Usage_error("cannot write " + path + ": " + (errno != 0 ? std::strerror(errno) : e.what()));
   }
   catch(const std::range_error& e)
   {

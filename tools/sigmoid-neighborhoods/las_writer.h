@@ -3,12 +3,13 @@
 //
 // Writing uncompressed LAS files (ASPRS LAS 1.4 R15): the fields of the public header block that a
 // writer of tiles changes (point counts, bounding box, the offsets of what follows the points),
-// computed from the point records written, and the layout of an input whose records are copied.
-// Standard C++ alone: benchmark/generate_survey.cpp writes its tiles with it too.
+// computed from the point records written, and the layout of an input whose records are copied,
+// header and trailer as they are (catalog retile keeps a tile's LAS version).
 
 #ifndef SIGMOID_NEIGHBORHOODS_TOOL_LAS_WRITER_H
 #define SIGMOID_NEIGHBORHOODS_TOOL_LAS_WRITER_H
 
+#include <CGAL/Sigmoid_neighborhoods/IO/Las_point_summary.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
 
 #include <algorithm>
@@ -76,31 +77,7 @@ using CGAL::Sigmoid_neighborhoods::load_little_endian;
 using CGAL::Sigmoid_neighborhoods::store_little_endian;
 
 // What a header says of the point records after it, gathered as they are written.
-struct Point_summary
-{
-  std::uint64_t count = 0;
-  std::array<std::uint64_t, RETURNS> by_return{}; // returns 1 to 15; a return number 0 counts nowhere
-  std::array<std::int32_t, 3> min{{(std::numeric_limits<std::int32_t>::max)(),
-                                   (std::numeric_limits<std::int32_t>::max)(),
-                                   (std::numeric_limits<std::int32_t>::max)()}};
-  std::array<std::int32_t, 3> max{{(std::numeric_limits<std::int32_t>::min)(),
-                                   (std::numeric_limits<std::int32_t>::min)(),
-                                   (std::numeric_limits<std::int32_t>::min)()}};
-
-  void add(const unsigned char* record, bool extended_format)
-  {
-    ++count;
-    for(int c = 0; c < 3; ++c)
-    {
-      const std::int32_t v = load_little_endian<std::int32_t>(record + 4 * c);
-      min[c] = (std::min)(min[c], v);
-      max[c] = (std::max)(max[c], v);
-    }
-    const unsigned int return_number = extended_format ? (record[14] & 0x0F) : (record[14] & 0x07);
-    if(return_number >= 1)
-      ++by_return[return_number - 1];
-  }
-};
+using Point_summary = CGAL::Sigmoid_neighborhoods::Las_point_summary;
 
 // Writes into `header`, a public header block of `header_size` bytes that holds the version, the
 // point format, the scales and the offsets, the counts and the bounding box of `points`. LAS 1.4

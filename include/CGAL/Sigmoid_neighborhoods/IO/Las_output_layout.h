@@ -100,7 +100,7 @@ struct Las_output_layout
   std::uint16_t record_length = 0;    ///< with the added dimensions
   std::vector<Las_extra_dimension> added; ///< the dimensions added after the copied bytes
   std::vector<std::uint16_t> added_offsets; ///< the byte of a record where each of `added` starts
-  std::array<double, 3> scale{{0., 0., 0.}};  ///< coordinate = integer * scale + offset
+  std::array<double, 3> scale{{0., 0., 0.}};  ///< coordinate = integer * scale + offset (the header's)
   std::array<double, 3> offset{{0., 0., 0.}}; ///< see `scale`
 
   /// formats 6 to 10: 4-bit return numbers, 8-bit classification at byte 16
@@ -205,6 +205,19 @@ inline void store_las_software_fields(Las_output_layout& l, const char* system_i
 
 } // namespace internal
 /// \endcond
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsIO
+  appends to the VLRs of `layout` a variable length record of user `user_id` (at most 16 characters),
+  number `record_id` and `description` (at most 32 characters) holding `payload`, e.g. a CRS as OGC
+  WKT (`LASF_Projection`, 2112).
+  \throws std::length_error for a payload of more than 65535 bytes
+*/
+inline void add_las_vlr(Las_output_layout& layout, const std::string& user_id, std::uint16_t record_id,
+                        const std::string& description, const std::vector<unsigned char>& payload)
+{
+  internal::append_las_vlr(layout, user_id.c_str(), record_id, description.c_str(), payload);
+}
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsIO
@@ -365,11 +378,6 @@ inline Las_output_layout las_output_layout_for(const std::array<double, 3>& min,
   gmtime_r(&now, &date);
   store_little_endian<std::uint16_t>(h + 90, std::uint16_t(date.tm_yday + 1));
   store_little_endian<std::uint16_t>(h + 92, std::uint16_t(date.tm_year + 1900));
-  for(int c = 0; c < 3; ++c)
-  {
-    store_little_endian<double>(h + 131 + 8 * c, l.scale[c]);
-    store_little_endian<double>(h + 155 + 8 * c, l.offset[c]);
-  }
   internal::add_las_extra_dimensions(l, {}, added);
   return l;
 }

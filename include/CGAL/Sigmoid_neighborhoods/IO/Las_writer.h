@@ -7,6 +7,7 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_LAS_WRITER_H
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Las_output_layout.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/Las_point_summary.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
 
 #include <algorithm>
@@ -25,40 +26,9 @@ namespace Sigmoid_neighborhoods {
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsIO
-  what the public header block of a LAS 1.4 file says of the point records after it, summed up
-  as they are written: their count, their count by return number and their bounding box.
-*/
-struct Las_point_summary
-{
-  std::uint64_t count = 0; ///< records
-  std::array<std::uint64_t, 15> by_return{}; ///< records of return numbers 1 to 15 (0 counts nowhere)
-  /// the smallest integer coordinates
-  std::array<std::int32_t, 3> min{{(std::numeric_limits<std::int32_t>::max)(), (std::numeric_limits<std::int32_t>::max)(),
-                                   (std::numeric_limits<std::int32_t>::max)()}};
-  /// the largest integer coordinates
-  std::array<std::int32_t, 3> max{{(std::numeric_limits<std::int32_t>::min)(), (std::numeric_limits<std::int32_t>::min)(),
-                                   (std::numeric_limits<std::int32_t>::min)()}};
-
-  /// adds the record `record`, of a point format 6 to 10 when `extended_format`
-  void add(const unsigned char* record, bool extended_format)
-  {
-    ++count;
-    for(int c = 0; c < 3; ++c)
-    {
-      const std::int32_t v = load_little_endian<std::int32_t>(record + 4 * c);
-      min[c] = (std::min)(min[c], v);
-      max[c] = (std::max)(max[c], v);
-    }
-    const unsigned int return_number = extended_format ? (record[14] & 0x0F) : (record[14] & 0x07);
-    if(return_number >= 1)
-      ++by_return[return_number - 1];
-  }
-};
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   writes a LAS 1.4 file laid out by a `Las_output_layout`: its header and VLRs when made, the
   point records given to `write()` in order, and on `close()` the EVLRs and the header's counts,
+  scales and offsets (the layout's `scale` and `offset`),
   counts by return and bounding box (LAS 1.4 rules: the 64-bit counts always; the legacy 32-bit ones
   equal to them in point formats 0 to 5 while they fit, else 0). The stream must be seekable (a
   file): `close()` rewrites the header. Memory: the layout only; the records stay the caller's.
@@ -129,6 +99,8 @@ private:
       store_little_endian<std::uint32_t>(b + 111 + 4 * r, legacy ? std::uint32_t(p.by_return[r]) : 0u);
     for(int c = 0; c < 3; ++c)
     {
+      store_little_endian<double>(b + 131 + 8 * c, m_layout.scale[c]);
+      store_little_endian<double>(b + 155 + 8 * c, m_layout.offset[c]);
       double low = 0., high = 0.;
       if(p.count != 0)
       {
