@@ -22,6 +22,7 @@ from ._core import (  # noqa: F401
     knn,
     optimal,
     read,
+    write,
 )
 
 __all__ = [
@@ -36,6 +37,7 @@ __all__ = [
     "knn",
     "optimal",
     "read",
+    "write",
 ]
 
 __doc__ = __doc__ + "\n" + _core_doc

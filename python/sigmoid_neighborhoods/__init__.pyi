@@ -29,6 +29,17 @@ def read(
     viewpoint: Optional[Sequence[float]] = None,
     threads: Optional[int] = None,
 ) -> Dict[str, Any]: ...
+def write(
+    path: Union[str, os.PathLike[str]],
+    points: Coordinates,
+    fields: Optional[Dict[str, npt.ArrayLike]] = None,
+    *,
+    labels: Optional[npt.ArrayLike] = None,
+    intensity: Optional[npt.ArrayLike] = None,
+    return_number: Optional[npt.ArrayLike] = None,
+    number_of_returns: Optional[npt.ArrayLike] = None,
+    gps_time: Optional[npt.ArrayLike] = None,
+) -> None: ...
 def knn(
     points: Coordinates, k: int, *, threads: Optional[int] = None
 ) -> Tuple[npt.NDArray[np.uint32], npt.NDArray[np.uint64]]: ...

@@ -6,6 +6,8 @@
 #include "bindings.h"
 #include "numpy_arrays.h"
 
+#include <CGAL/Sigmoid_neighborhoods/IO/Las_writer.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_height_features.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_k_nearest_neighbors.h>
@@ -17,7 +19,11 @@
 
 #include <pybind11/stl.h>
 
+#include <array>
+#include <cstring>
+#include <fstream>
 #include <functional>
+#include <map>
 #include <stdexcept>
 
 namespace sigmoid_neighborhoods_python {
@@ -98,6 +104,119 @@ py::dict read(const py::object& path, const std::string& normals, unsigned int k
   result["zero_normals"] = set.zero_normals;
   result["dropped_vertices"] = set.dropped_vertices;
   return result;
+}
+
+// A one-dimensional array of n values as doubles (a copy when converted), or none.
+std::optional<py::array_t<double, py::array::forcecast>> column_of(const py::object& object, std::size_t n,
+                                                                   const std::string& name)
+{
+  if(object.is_none())
+    return std::nullopt;
+  py::array array = py::array::ensure(object);
+  if(!array || (array.dtype().kind() != 'f' && array.dtype().kind() != 'i' && array.dtype().kind() != 'u' &&
+                array.dtype().kind() != 'b'))
+    throw py::type_error(name + " must be an array of numbers");
+  if(array.ndim() != 1 || std::size_t(array.shape(0)) != n)
+    throw py::value_error(name + " must have shape (" + std::to_string(n) + ",), got " + Rows_3::shape_text(array));
+  return py::array_t<double, py::array::forcecast>::ensure(array);
+}
+
+// The smallest extra bytes type that holds the dtype's values exactly.
+SN::Las_extra_bytes_type extra_bytes_type(const py::dtype& dtype)
+{
+  typedef SN::Las_extra_bytes_type T;
+  const char kind = dtype.kind();
+  const py::ssize_t size = dtype.itemsize();
+  if(kind == 'f')
+    return size <= 4 ? T::FLOAT : T::DOUBLE;
+  if(kind == 'b')
+    return T::UNSIGNED_CHAR;
+  const bool is_unsigned = kind == 'u';
+  if(size == 1)
+    return is_unsigned ? T::UNSIGNED_CHAR : T::CHAR;
+  if(size == 2)
+    return is_unsigned ? T::UNSIGNED_SHORT : T::SHORT;
+  if(size == 4)
+    return is_unsigned ? T::UNSIGNED_LONG : T::LONG;
+  return is_unsigned ? T::UNSIGNED_LONG_LONG : T::LONG_LONG;
+}
+
+void write(const py::object& path, const py::object& points_object, const py::object& fields_object,
+           const py::object& labels, const py::object& intensity, const py::object& return_number,
+           const py::object& number_of_returns, const py::object& gps_time)
+{
+  const std::string filename = py::module_::import("os").attr("fspath")(path).cast<std::string>();
+  if(SN::lower_case_extension(filename) != "las")
+    throw py::value_error(filename + ": write() writes LAS (.las); LAZ output is not written yet");
+  const Rows_3 points(points_object, "points");
+  const std::size_t n = points.size();
+  const auto classification = column_of(labels, n, "labels");
+  const auto intensities = column_of(intensity, n, "intensity");
+  const auto returns = column_of(return_number, n, "return_number");
+  const auto numbers = column_of(number_of_returns, n, "number_of_returns");
+  const auto times = column_of(gps_time, n, "gps_time");
+  std::vector<SN::Las_extra_dimension> dimensions;
+  std::vector<py::array_t<double, py::array::forcecast>> columns;
+  if(!fields_object.is_none())
+    for(const auto& item : fields_object.cast<py::dict>())
+    {
+      const std::string name = py::str(item.first);
+      py::array array = py::array::ensure(item.second);
+      if(!array)
+        throw py::type_error("field " + name + " must be an array of numbers");
+      columns.push_back(*column_of(py::reinterpret_borrow<py::object>(item.second), n, "field " + name));
+      dimensions.push_back({name, "", extra_bytes_type(array.dtype())});
+    }
+  std::array<double, 3> min{{0., 0., 0.}}, max{{0., 0., 0.}};
+  for(std::size_t i = 0; i < n; ++i)
+    for(int c = 0; c < 3; ++c)
+    {
+      const double v = points(i, c);
+      if(!std::isfinite(v))
+        throw py::value_error("points[" + std::to_string(i) + "] is not finite");
+      min[c] = i == 0 ? v : (std::min)(min[c], v);
+      max[c] = i == 0 ? v : (std::max)(max[c], v);
+    }
+  SN::Las_output_layout layout = SN::las_output_layout_for(min, max, dimensions); // ValueError: a bad name
+  const std::string temporary = filename + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    if(!out)
+      throw py::value_error("cannot write " + filename + ": " + std::strerror(errno));
+    try
+    {
+      SN::Las_writer writer(out, layout);
+      const SN::Las_output_layout& l = writer.layout();
+      std::vector<unsigned char> record(l.record_length);
+      auto at = [](const std::optional<py::array_t<double, py::array::forcecast>>& a, std::size_t i, double otherwise) {
+        return a ? a->data()[i] : otherwise;
+      };
+      for(std::size_t i = 0; i < n; ++i)
+      {
+        std::fill(record.begin(), record.end(), 0);
+        SN::store_las_coordinates(record.data(), l, {{points(i, 0), points(i, 1), points(i, 2)}});
+        SN::store_little_endian<std::uint16_t>(record.data() + 12, std::uint16_t(at(intensities, i, 0.)));
+        record[14] = std::uint8_t((unsigned(at(returns, i, 1.)) & 0x0F) | (unsigned(at(numbers, i, 1.)) & 0x0F) << 4);
+        record[16] = std::uint8_t(at(classification, i, 0.));
+        SN::store_little_endian<double>(record.data() + 22, at(times, i, 0.));
+        for(std::size_t j = 0; j < columns.size(); ++j)
+          SN::store_las_extra(record.data(), l, j, columns[j].data()[i]);
+        writer.write(record.data(), 1);
+      }
+      writer.close();
+      out.close();
+      if(!out)
+        throw std::ios_base::failure("cannot write " + filename);
+    }
+    catch(...)
+    {
+      out.close();
+      std::remove(temporary.c_str());
+      throw;
+    }
+  }
+  if(std::rename(temporary.c_str(), filename.c_str()) != 0)
+    throw py::value_error("cannot write " + filename + ": " + std::strerror(errno));
 }
 
 py::tuple knn(const py::object& points_object, unsigned int k, const std::optional<int>& threads)
@@ -220,6 +339,36 @@ OSError
     no normals with normals="file", too few points to estimate normals; the message is the reader's
 ValueError
     unknown option values, k below what the estimation needs
+)doc");
+
+  m.def("write", &write, "path"_a, "points"_a, "fields"_a = py::none(), py::kw_only(), "labels"_a = py::none(),
+        "intensity"_a = py::none(), "return_number"_a = py::none(), "number_of_returns"_a = py::none(),
+        "gps_time"_a = py::none(),
+        R"doc(write(path, points, fields=None, *, labels=None, intensity=None, return_number=None, number_of_returns=None, gps_time=None)
+
+Writes the points as a LAS 1.4 file (point data format 6), which read() reads back: the coordinates
+rounded to one scale for the three axes, the smallest power of ten for which the points' largest half
+extent takes at most 2^30 units (a coordinate moves by at most half a unit, below 5e-9 times the
+largest extent, and the rounding of a double); labels (0 to 255) as the classification, intensity, return numbers (default 1 of 1)
+and GPS time as LAS stores them; each entry of `fields` as an extra bytes dimension of that name and
+of the array's type (float32, float64, int8 to uint64; bool as uint8), described in the Extra Bytes
+record that PDAL, LAStools, lidR and CloudCompare read. Written to a temporary file and renamed.
+
+Parameters
+----------
+path : str or os.PathLike
+    a .las file
+points : (n, 3) array of numbers
+fields : dict of str to (n,) arrays, optional
+    names of at most 32 characters
+labels, intensity, return_number, number_of_returns, gps_time : (n,) arrays, optional
+
+Raises
+------
+ValueError
+    another extension, non-finite points, a field's name or shape, a file that cannot be written
+TypeError
+    arrays that do not hold numbers
 )doc");
 
   m.def("knn", &knn, "points"_a, "k"_a, py::kw_only(), "threads"_a = py::none(),

@@ -344,6 +344,44 @@ def test_read_a_laz_tile_like_its_las_twin():
         assert laz["merged_duplicates"] == las["merged_duplicates"]
 
 
+def test_write_reads_back_through_read_within_half_a_scale_unit(tmp_path):
+    rng = np.random.default_rng(3)
+    points = rng.uniform(-50.0, 50.0, size=(500, 3)) + [651000.0, 6860000.0, 120.0]
+    labels = rng.integers(0, 20, size=500)
+    intensity = rng.integers(0, 65536, size=500).astype(np.uint16)
+    gps_time = 3.0e8 + np.arange(500) * 1e-5
+    path = tmp_path / "out.las"
+    sn.write(path, points, {"height": points[:, 2].astype(np.float32), "k": np.full(500, 17, dtype=np.uint8)},
+             labels=labels, intensity=intensity, return_number=np.full(500, 2), number_of_returns=np.full(500, 3),
+             gps_time=gps_time)
+    back = sn.read(path, k=0)
+    assert back["input_vertices"] == 500 and back["merged_duplicates"] == 0
+    scale = 1e-7  # half extent about 50: the smallest power of ten for which it takes at most 2^30 units
+    # half a unit, and the rounding of the doubles of both sides (coordinates of 6.9e6: 9.3e-10 apart)
+    assert np.abs(back["points"] - points).max() <= scale / 2 + 4 * np.spacing(np.abs(points).max())
+    assert np.array_equal(back["labels"], labels)
+    assert np.array_equal(back["intensity"], intensity)
+    assert np.all(back["return_number"] == 2) and np.all(back["number_of_returns"] == 3)
+    assert np.array_equal(back["gps_time"], gps_time)
+    data = path.read_bytes()
+    assert data[104] == 6 and int.from_bytes(data[105:107], "little") == 30 + 4 + 1  # float32, uint8 added
+    assert b"height" in data and b"LASF_Spec" in data
+    assert not list(tmp_path.glob("*.tmp"))
+
+
+def test_write_refuses_what_it_cannot_write(tmp_path):
+    points = np.zeros((3, 3))
+    with pytest.raises(ValueError, match="LAZ output"):
+        sn.write(tmp_path / "out.laz", points)
+    with pytest.raises(ValueError, match="shape"):
+        sn.write(tmp_path / "out.las", points, {"a": np.zeros(2)})
+    with pytest.raises(ValueError, match="32 characters"):
+        sn.write(tmp_path / "out.las", points, {"x" * 33: np.zeros(3)})
+    with pytest.raises(ValueError, match="not finite"):
+        sn.write(tmp_path / "out.las", np.array([[0.0, np.nan, 0.0]]))
+    assert not list(tmp_path.iterdir())
+
+
 def test_read_refuses_wave_packets_and_damaged_laz(tmp_path):
     with pytest.raises(OSError, match="wave packets"):
         sn.read(needs(SHARED_DATA / "laz/fullwave.laz"), k=0)
@@ -459,6 +497,7 @@ def test_help_reads_like_the_reference():
                      sn.height_features):
         assert function.__doc__.startswith(function.__name__ + "(")
         assert "Returns" in function.__doc__
+    assert sn.write.__doc__.startswith("write(") and "Raises" in sn.write.__doc__
     assert "Equation 9" in sn.optimal.__doc__ and "k_min" in sn.optimal.__doc__
     stub = pathlib.Path(sn.__file__).with_name("__init__.pyi")
     assert stub.exists() and "def optimal(" in stub.read_text()

@@ -338,7 +338,7 @@ inline Las_output_layout las_output_layout_like(const std::string& filename,
   about the box's centre (`offset`) in units of one `scale` for all three axes: the smallest power
   of ten for which the box's largest half extent takes at most 2^30 units, so a coordinate is
   rounded by at most half a unit, less than 5e-9 times the box's largest extent (1e-9 for a box of
-  one point). No CRS is written (global encoding: WKT bit set, as LAS 1.4 requires of these formats);
+  one point), and the rounding of a double in `integer * scale + offset`. No CRS is written (global encoding: WKT bit set, as LAS 1.4 requires of these formats);
   the system identifier is `OTHER`, the creation date today's (or that of `SOURCE_DATE_EPOCH`, for
   files that repeat bit for bit).
   \throws std::invalid_argument for a point format other than 6, 7 or 8, or a box not finite
