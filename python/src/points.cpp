@@ -366,7 +366,9 @@ labels, intensity, return_number, number_of_returns, gps_time : (n,) arrays, opt
 Raises
 ------
 ValueError
-    another extension, non-finite points, a field's name or shape, a file that cannot be written
+    another extension, non-finite points, a field's name or shape, a file that cannot be created
+RuntimeError
+    a write that fails (a full disk); no file is left
 TypeError
     arrays that do not hold numbers
 )doc");

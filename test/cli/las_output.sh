@@ -92,7 +92,9 @@ expect_refusal "of 31 at most" "$tool" classify predict "$dir/model.bin" "$data/
   --class-codes ground=40
 expect_refusal "is not NAME=CODE" "$tool" classify predict "$dir/model.bin" "$data/laz/simple.las" -o "$dir/x.las" \
   --class-codes water=9
+expect_refusal "goes with -o OUT.las" "$tool" classify predict "$dir/model.bin" "$data/laz/simple.las" -o "$dir/x.ply" \
+  --class-codes ground=2
 expect_refusal "LAS output of a catalog" "$tool" optimal --catalog "$data/laz" -o "$dir/x.las" $search
-[ ! -e "$dir/x.las" ] && [ ! -e "$dir/x.laz" ] || fail "a refused command wrote its output"
+[ ! -e "$dir/x.las" ] && [ ! -e "$dir/x.laz" ] && [ ! -e "$dir/x.ply" ] || fail "a refused command wrote its output"
 ls "$dir" | grep -q "\.tmp\." && fail "a temporary file left behind"
 echo "las-output-ok"

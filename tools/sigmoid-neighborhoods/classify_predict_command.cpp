@@ -15,8 +15,8 @@
 #include <algorithm>
 #include <cstddef>
 #include <functional>
-#include <sstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -121,6 +121,9 @@ int run_classify_predict(int argc, char** argv)
   const std::string output = args.output();
   if(output.empty())
     throw Usage_error("classify predict needs -o OUT.ply or -o OUT.las");
+  const bool las_output = is_las_output(output); // a .laz output refused before any work
+  if(args.has("--class-codes") && !las_output)
+    throw Usage_error("--class-codes goes with -o OUT.las: a PLY output holds the class indices");
   refuse_las_output_of_catalog(args, "classify predict");
   const std::string& model_path = args.positional()[0];
   std::string forest_bytes;
@@ -169,7 +172,7 @@ int run_classify_predict(int argc, char** argv)
   const Prediction p = predict(file, settings, forest_bytes, nullptr, graphcut);
   times.end("forest");
   times.move("forest", "forest loading", p.seconds_loading);
-  if(is_las_output(output))
+  if(las_output)
     write_prediction_las(output, file, p, class_codes, settings.features.threads);
   else
     write_prediction_ply(output, file, p, settings.labels, in.first, in.last);

@@ -260,6 +260,7 @@ inline int run_optimal(int argc, char** argv)
   if(csv.empty())
     throw Usage_error("optimal needs -o OUT.csv");
   const std::string ply = args.get("--ply");
+  const bool las_output = is_las_output(csv); // a .laz output refused before any work
   refuse_las_output_of_catalog(args, "optimal");
   Search_options options = read_search_options(args);
   try
@@ -285,7 +286,7 @@ inline int run_optimal(int argc, char** argv)
   for(std::size_t i = in.first; i < in.last; ++i)
     failures += records[i].is_failure();
 
-  if(is_las_output(csv))
+  if(las_output)
     write_optimal_las(csv, in.source, model, records, options);
   else
     write_file_atomically(csv, [&](std::ofstream& out) {

@@ -27,11 +27,12 @@ namespace Sigmoid_neighborhoods {
 /*!
   \ingroup PkgSigmoidNeighborhoodsIO
   writes a LAS 1.4 file laid out by a `Las_output_layout`: its header and VLRs when made, the
-  point records given to `write()` in order, and on `close()` the EVLRs and the header's counts,
-  scales and offsets (the layout's `scale` and `offset`),
-  counts by return and bounding box (LAS 1.4 rules: the 64-bit counts always; the legacy 32-bit ones
-  equal to them in point formats 0 to 5 while they fit, else 0). The stream must be seekable (a
+  point records given to `write()` in order, and on `close()` the EVLRs and the header again with the
+  records' counts, counts by return and bounding box (LAS 1.4 rules: the 64-bit counts always; the
+  legacy 32-bit ones equal to them in point formats 0 to 5 while they fit, else 0) and the layout's
+  `scale` and `offset`. The file starts at the stream's start and the stream must be seekable (a
   file): `close()` rewrites the header. Memory: the layout only; the records stay the caller's.
+  A failed write throws `std::ios_base::failure`.
 */
 class Las_writer
 {
