@@ -19,11 +19,15 @@
 
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <functional>
-#include <map>
+#include <optional>
 #include <stdexcept>
 
 namespace sigmoid_neighborhoods_python {
@@ -188,17 +192,20 @@ void write(const py::object& path, const py::object& points_object, const py::ob
       SN::Las_writer writer(out, layout);
       const SN::Las_output_layout& l = writer.layout();
       std::vector<unsigned char> record(l.record_length);
-      auto at = [](const std::optional<py::array_t<double, py::array::forcecast>>& a, std::size_t i, double otherwise) {
-        return a ? a->data()[i] : otherwise;
+      // a field's value clamped to what it holds (NaN as 0): no conversion out of range
+      auto at = [](const std::optional<py::array_t<double, py::array::forcecast>>& a, std::size_t i, double otherwise,
+                   double largest) {
+        const double v = a ? a->data()[i] : otherwise;
+        return std::isnan(v) ? 0. : std::clamp(std::nearbyint(v), 0., largest);
       };
       for(std::size_t i = 0; i < n; ++i)
       {
         std::fill(record.begin(), record.end(), 0);
         SN::store_las_coordinates(record.data(), l, {{points(i, 0), points(i, 1), points(i, 2)}});
-        SN::store_little_endian<std::uint16_t>(record.data() + 12, std::uint16_t(at(intensities, i, 0.)));
-        record[14] = std::uint8_t((unsigned(at(returns, i, 1.)) & 0x0F) | (unsigned(at(numbers, i, 1.)) & 0x0F) << 4);
-        record[16] = std::uint8_t(at(classification, i, 0.));
-        SN::store_little_endian<double>(record.data() + 22, at(times, i, 0.));
+        SN::store_little_endian<std::uint16_t>(record.data() + 12, std::uint16_t(at(intensities, i, 0., 65535.)));
+        record[14] = std::uint8_t(unsigned(at(returns, i, 1., 15.)) | unsigned(at(numbers, i, 1., 15.)) << 4);
+        record[16] = std::uint8_t(at(classification, i, 0., 255.));
+        SN::store_little_endian<double>(record.data() + 22, times ? times->data()[i] : 0.);
         for(std::size_t j = 0; j < columns.size(); ++j)
           SN::store_las_extra(record.data(), l, j, columns[j].data()[i]);
         writer.write(record.data(), 1);
