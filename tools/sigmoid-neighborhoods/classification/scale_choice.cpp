@@ -29,6 +29,9 @@
 namespace sigmoid_tool {
 namespace classification {
 
+// The held-out points predicted per fold, at most: their rows are the choice's largest memory.
+constexpr std::size_t TEST_POINTS_PER_FOLD = 40000;
+
 const std::vector<double>& scale_ladder()
 {
   static const std::vector<double> ladder{0.0625, 0.125, 0.25, 0.5, 1.};
@@ -120,6 +123,29 @@ std::vector<std::vector<int>> training_truth(const std::vector<Fold_file>& files
   return truth;
 }
 
+// The labeled points of `truth` (one vector per file) thinned to at most `limit` evenly spaced over
+// the files, whatever their class: the classes' proportions, which the IoU depends on, stay.
+void keep_evenly(std::vector<std::vector<int>>& truth, std::size_t limit)
+{
+  std::size_t labeled = 0;
+  for(const std::vector<int>& t : truth)
+    labeled += std::size_t(std::count_if(t.begin(), t.end(), [](int c) { return c >= 0; }));
+  if(labeled <= limit)
+    return;
+  std::size_t seen = 0, kept = 0;
+  for(std::vector<int>& t : truth)
+    for(int& c : t)
+    {
+      if(c < 0)
+        continue;
+      const std::size_t wanted = (++seen) * limit / labeled; // as cap_points_per_class(), over all classes
+      if(wanted > kept)
+        ++kept;
+      else
+        c = -1;
+    }
+}
+
 // The pooled confusion of the two folds' forests, each trained on `train[fold]` and predicting the
 // other fold's `test`.
 Confusion cross_validated(const std::array<Training_rows, 2>& train, const std::array<Training_rows, 2>& test,
@@ -182,6 +208,7 @@ Scale_choice_report choose_first_scale(const std::vector<std::string>& paths, co
     train_truth[fold] = training_truth(files, fold, classes, cap);
     thinned_truth[fold] = training_truth(thinned, fold, classes, cap);
     test_truth[fold] = training_truth(files, fold, classes, 0);
+    keep_evenly(test_truth[fold], TEST_POINTS_PER_FOLD);
   }
 
   Scale_choice_report report;
