@@ -12,7 +12,7 @@
 # (the PLY holds the distinct positions in their first record's order).
 # With --csv CSV NAME[=COLUMN]..., each named dimension holds the CSV column of that name at its record's
 # position (to float precision; blanks as NaN). The input's EVLRs follow the output's points unchanged.
-# usage: check_las_output.py OUTPUT.las INPUT.las [--changed classification] [--values NAME]
+# usage: check_las_output.py OUTPUT.las INPUT.las [--changed classification|xyz] [--values NAME]
 #                            [--classes PREDICTION.ply CODES] [--csv CSV NAME[=COLUMN]...]
 import struct
 import sys
@@ -146,6 +146,8 @@ def main():
     extended = h["format"] >= 6
     if "classification" in changed:
         mask[16 if extended else 15] = False
+    if "xyz" in changed:
+        mask[:12] = False
     differ = np.nonzero((out[:, :copied] != inp)[:, mask].any(axis=1))[0]
     if len(differ):
         fail("%d records changed, the first %d" % (len(differ), differ[0]))

@@ -2,7 +2,7 @@
 # Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 # SPDX-License-Identifier: GPL-3.0-or-later
 #
-# LAS output (-o OUT.las) of optimal and classify predict, read by check_las_output.py (numpy alone):
+# LAS output (-o OUT.las) of optimal, classify predict and denoise, read by check_las_output.py (numpy alone):
 # every record of the input as it was but the classification, the header's summary right, the
 # results as described extra bytes dimensions equal to the CSV's columns and the PLY's classes, on
 # the six IGN tiles and on the LAS and LAZ files of ../shared/data/laz (LAS 1.2 to 1.4, extra bytes,
@@ -65,6 +65,25 @@ cmp "$dir/p_laz.las" "$dir/p_77050_627760.las" || fail "predict: a LAZ input and
   || fail "predict on a LAS 1.2 file"
 "$python" "$checker" "$dir/p_simple.las" "$data/laz/simple.las" --changed classification > /dev/null \
   || fail "predict on a LAS 1.2 file: the LAS output"
+
+# denoise: the records with their coordinates moved to the denoised points (within half the file's
+# scale of the XYZ output's) and the filtered normals added
+"$tool" denoise "$data/laz/simple.las" -o "$dir/d.xyz" --iterations 3 2> /dev/null || fail "denoise (XYZ)"
+"$tool" denoise "$data/laz/simple.las" -o "$dir/d.las" --iterations 3 2> /dev/null || fail "denoise (LAS)"
+"$python" "$checker" "$dir/d.las" "$data/laz/simple.las" --changed xyz > "$dir/names.txt" || fail "denoise: the LAS output"
+grep -q "^normal_x,normal_y,normal_z$" "$dir/names.txt" || fail "denoise: $(cat "$dir/names.txt")"
+"$python" -c "
+import numpy as np, struct
+data = open('$dir/d.las', 'rb').read()
+start, length, count = struct.unpack_from('<I', data, 96)[0], struct.unpack_from('<H', data, 105)[0], struct.unpack_from('<Q', data, 247)[0]
+scale, offset = np.array(struct.unpack_from('<3d', data, 131)), np.array(struct.unpack_from('<3d', data, 155))
+records = np.frombuffer(data, np.uint8, count * length, start).reshape(count, length)
+xyz = records[:, :12].copy().view('<i4').reshape(-1, 3) * scale + offset
+expected = np.loadtxt('$dir/d.xyz')
+assert len(expected) == count and np.abs(xyz - expected[:, :3]).max() <= scale.max() / 2 * 1.001
+normal_x = records[:, length - 12:length - 8].copy().view('<f4').reshape(-1)
+assert np.abs(normal_x - expected[:, 3]).max() < 1e-7
+" || fail "denoise: the LAS output's positions or normals"
 
 # a point set of another format: new records, coordinates within half a unit of the scale
 "$python" -c "

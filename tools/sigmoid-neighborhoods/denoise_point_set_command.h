@@ -9,6 +9,7 @@
 
 #include "command_line.h"
 #include "filter_command.h"
+#include "las_output.h"
 #include "model_input.h"
 #include "phase_times.h"
 #include "ply_output.h"
@@ -41,7 +42,9 @@ inline const char* DENOISE_POINT_SET_USAGE =
   "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply; normals estimated when absent)\n"
   "  OUTPUT: .xyz or .pwn (x y z nx ny nz), .ply (binary point cloud with normals); for a mesh INPUT\n"
   "          also .off, .obj or .stl, and .ply is then the mesh: vertices moved, faces kept (the input\n"
-  "          normals are then the mesh's vertex normals, whatever --normals says)\n"
+  "          normals are then the mesh's vertex normals, whatever --normals says); .las: LAS 1.4, a LAS/LAZ\n"
+  "          input's records with their coordinates moved (rounded to its scale) and the normals as extra\n"
+  "          bytes normal_x/y/z (format 6 records for other inputs)\n"
   "  --iterations: at most this many (default 50); they stop when the points have moved by the noise\n"
   "                level estimated from the input (--no-stop: all of them)\n"
   "  --step: the step alpha towards each rule's target; --max-deviation: a move farther than E from the\n"
@@ -127,6 +130,25 @@ inline void check_denoising_arguments(const Arguments& args)
     throw Usage_error("--rank-threshold must lie in [0, 1]");
 }
 
+// The denoised points as LAS (las_output.h): a LAS/LAZ input's records, their coordinates moved to
+// their point's denoised position at the file's scale, its filtered normal as extra bytes.
+inline void write_denoised_las(const std::string& path, const std::string& input, const SN::Oriented_point_set& denoised,
+                               const std::vector<SN::Oriented_point_set::Vector_3>& normals, unsigned int threads)
+{
+  typedef SN::Las_extra_bytes_type Type;
+  Las_results r;
+  r.dimensions = {{"normal_x", "filtered unit normal, x", Type::FLOAT},
+                  {"normal_y", "filtered unit normal, y", Type::FLOAT},
+                  {"normal_z", "filtered unit normal, z", Type::FLOAT}};
+  r.complete = [&](unsigned char* record, const SN::Las_output_layout& l, std::size_t i) {
+    const auto& p = denoised.points[i];
+    SN::store_las_coordinates(record, l, {{p.x(), p.y(), p.z()}});
+    for(int c = 0; c < 3; ++c)
+      SN::store_las_extra(record, l, std::size_t(c), normals[i][c]);
+  };
+  write_las_results(path, input, denoised, r, threads);
+}
+
 inline int run_denoise_point_set(int argc, char** argv)
 {
   const Arguments args(
@@ -142,13 +164,13 @@ inline int run_denoise_point_set(int argc, char** argv)
     return EXIT_OK;
   }
   const auto input_and_output =
-    one_input_and_output(args, "denoise", "OUTPUT (.xyz, .pwn, .ply, or for a mesh .off, .obj, .stl)");
+    one_input_and_output(args, "denoise", "OUTPUT (.xyz, .pwn, .ply, .las, or for a mesh .off, .obj, .stl)");
   const std::string& input = input_and_output.first;
   const std::string& output = input_and_output.second;
   const std::string ext = SN::lower_case_extension(output);
-  if(ext != "xyz" && ext != "pwn" && ext != "ply" && !is_mesh_format(ext))
+  if(ext != "xyz" && ext != "pwn" && ext != "ply" && !is_las_output(output) && !is_mesh_format(ext))
     throw Usage_error("unknown output format '" + (ext.empty() ? std::string("(no extension)") : "." + ext) +
-                      "': expected .xyz, .pwn, .ply, .off, .obj or .stl");
+                      "': expected .xyz, .pwn, .ply, .las, .off, .obj or .stl");
   const Filter_options options = read_filter_options(args);
   check_denoising_arguments(args);
   const SN::Normal_options normal_options = read_normal_options(args);
@@ -162,7 +184,7 @@ inline int run_denoise_point_set(int argc, char** argv)
   times.end_reading(model);
   if(is_mesh_format(ext) && !model.is_mesh)
     throw Usage_error(input + ": a point set cannot be written as a mesh (." + ext + "): use .xyz, .pwn or .ply");
-  if(model.is_mesh && ext != "xyz" && ext != "pwn")
+  if(model.is_mesh && ext != "xyz" && ext != "pwn" && ext != "las")
   {
     // A mesh written as a mesh: its vertices move, its faces stay.
     Denoise_tool_mesh mesh;
@@ -222,7 +244,9 @@ inline int run_denoise_point_set(int argc, char** argv)
     description = model_description(model);
     SN::Oriented_point_set denoised = model;
     denoised.points = points;
-    if(ext == "ply")
+    if(ext == "las")
+      write_denoised_las(output, input, denoised, normals, options.threads);
+    else if(ext == "ply")
       write_file_atomically(output, [&](std::ofstream& out) { write_filtered_ply(out, denoised, normals); }, true);
     else
       write_file_atomically(output, [&](std::ofstream& out) { write_filtered_xyz(out, denoised, normals, options.threads); });
