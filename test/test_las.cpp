@@ -8,6 +8,7 @@
 // labels of PLY point sets; zero normals in point-set files under Normal_source::AUTO.
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Las_writer.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/las_output_layout_like.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_las.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_las_records.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>

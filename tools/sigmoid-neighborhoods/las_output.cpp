@@ -9,14 +9,15 @@
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Las_writer.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/las_output_layout_like.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_las_records.h>
 
 #include <CGAL/Bbox_3.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <array>
+#include <cerrno>
 #include <cstring>
 #include <fstream>
 #include <ios>

@@ -79,43 +79,17 @@ using CGAL::Sigmoid_neighborhoods::store_little_endian;
 // What a header says of the point records after it, gathered as they are written.
 using Point_summary = CGAL::Sigmoid_neighborhoods::Las_point_summary;
 
-// Writes into `header`, a public header block of `header_size` bytes that holds the version, the
-// point format, the scales and the offsets, the counts and the bounding box of `points`. LAS 1.4
-// rules: the 64-bit counts always; the legacy 32-bit counts are 0 in point formats 6-10 and when the
-// count exceeds 32 bits, else equal to the 64-bit ones (returns 1 to 5). Before LAS 1.4 the legacy
-// counts are the only ones, and a count beyond 32 bits cannot be written.
+// The public summary's counts and bounds written into `header` (store_las_point_summary()), a
+// count that a header before LAS 1.4 cannot hold refused as the tool refuses a LAS file.
 inline void write_point_summary(unsigned char* header, std::size_t header_size, const Point_summary& points)
 {
-  const unsigned int minor = header[VERSION_MINOR];
-  const unsigned int format = header[POINT_FORMAT] & FORMAT_BITS;
-  const bool has_64_bit_counts = minor >= 4 && header_size >= HEADER_BYTES_1_4;
-  const bool fits_legacy = points.count <= (std::numeric_limits<std::uint32_t>::max)();
-  if(!has_64_bit_counts && !fits_legacy)
-    throw Las_format_error(std::to_string(points.count) + " points: more than a LAS 1." + std::to_string(minor) +
-                           " header can count (32 bits)");
-  const bool legacy = !has_64_bit_counts || (format < FIRST_EXTENDED_FORMAT && fits_legacy);
-  store_little_endian<std::uint32_t>(header + LEGACY_POINT_COUNT, legacy ? std::uint32_t(points.count) : 0u);
-  for(std::size_t r = 0; r < LEGACY_RETURNS; ++r)
-    store_little_endian<std::uint32_t>(header + LEGACY_POINTS_BY_RETURN + 4 * r, legacy ? std::uint32_t(points.by_return[r]) : 0u);
-  if(has_64_bit_counts)
+  try
   {
-    store_little_endian<std::uint64_t>(header + POINT_COUNT, points.count);
-    for(std::size_t r = 0; r < RETURNS; ++r)
-      store_little_endian<std::uint64_t>(header + POINTS_BY_RETURN + 8 * r, points.by_return[r]);
+    CGAL::Sigmoid_neighborhoods::store_las_point_summary(header, header_size, points);
   }
-  // The coordinates as a reader computes them, raw * scale + offset; a negative scale swaps the ends.
-  for(int c = 0; c < 3; ++c)
+  catch(const std::length_error& e)
   {
-    double low = 0., high = 0.;
-    if(points.count != 0)
-    {
-      const double scale = load_little_endian<double>(header + SCALE + 8 * c), offset = load_little_endian<double>(header + OFFSET + 8 * c);
-      const double a = double(points.min[c]) * scale + offset, b = double(points.max[c]) * scale + offset;
-      low = (std::min)(a, b);
-      high = (std::max)(a, b);
-    }
-    store_little_endian<double>(header + BOUNDS + 16 * c, high);
-    store_little_endian<double>(header + BOUNDS + 16 * c + 8, low);
+    throw Las_format_error(e.what());
   }
 }
 

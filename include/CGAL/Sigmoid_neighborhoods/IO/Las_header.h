@@ -13,6 +13,15 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The bytes of a record of each point data format 0 to 10 without extra bytes (LAS 1.4 R15).
+constexpr std::uint16_t LAS_POINT_RECORD_BYTES[11] = {20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67};
+
+} // namespace internal
+/// \endcond
+
 /*!
   \ingroup PkgSigmoidNeighborhoodsIO
   what the public header block of a LAS or LAZ file (ASPRS LAS 1.0 to 1.4 R15) says of its point

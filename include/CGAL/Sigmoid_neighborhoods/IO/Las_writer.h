@@ -82,7 +82,6 @@ private:
   {
     std::array<unsigned char, Las_output_layout::HEADER_BYTES> h = m_layout.header;
     unsigned char* b = h.data();
-    const Las_point_summary& p = m_summary;
     b[24] = 1;
     b[25] = 4;
     store_little_endian<std::uint16_t>(b + 94, std::uint16_t(h.size()));
@@ -94,34 +93,17 @@ private:
     store_little_endian<std::uint32_t>(b + 100, m_layout.vlr_count);
     b[104] = std::uint8_t(m_layout.point_format);
     store_little_endian<std::uint16_t>(b + 105, m_layout.record_length);
-    const bool legacy = !m_layout.has_extended_format() && p.count <= (std::numeric_limits<std::uint32_t>::max)();
-    store_little_endian<std::uint32_t>(b + 107, legacy ? std::uint32_t(p.count) : 0u);
-    for(std::size_t r = 0; r < 5; ++r)
-      store_little_endian<std::uint32_t>(b + 111 + 4 * r, legacy ? std::uint32_t(p.by_return[r]) : 0u);
     for(int c = 0; c < 3; ++c)
     {
       store_little_endian<double>(b + 131 + 8 * c, m_layout.scale[c]);
       store_little_endian<double>(b + 155 + 8 * c, m_layout.offset[c]);
-      double low = 0., high = 0.;
-      if(p.count != 0)
-      {
-        // as a reader computes them, integer * scale + offset; a negative scale swaps the ends
-        const double a = double(p.min[c]) * m_layout.scale[c] + m_layout.offset[c];
-        const double z = double(p.max[c]) * m_layout.scale[c] + m_layout.offset[c];
-        low = (std::min)(a, z);
-        high = (std::max)(a, z);
-      }
-      store_little_endian<double>(b + 179 + 16 * c, high);
-      store_little_endian<double>(b + 187 + 16 * c, low);
     }
-    const std::uint64_t evlrs = point_data + p.count * m_layout.record_length;
+    store_las_point_summary(b, h.size(), m_summary);
+    const std::uint64_t evlrs = point_data + m_summary.count * m_layout.record_length;
     const bool has_waveforms = m_layout.waveforms_in_evlrs != Las_output_layout::NO_WAVEFORMS;
     store_little_endian<std::uint64_t>(b + 227, has_waveforms ? evlrs + m_layout.waveforms_in_evlrs : 0u);
     store_little_endian<std::uint64_t>(b + 235, m_layout.evlr_count != 0 ? evlrs : 0u);
     store_little_endian<std::uint32_t>(b + 243, m_layout.evlr_count);
-    store_little_endian<std::uint64_t>(b + 247, p.count);
-    for(std::size_t r = 0; r < 15; ++r)
-      store_little_endian<std::uint64_t>(b + 255 + 8 * r, p.by_return[r]);
     m_out.write(reinterpret_cast<const char*>(b), std::streamsize(h.size()));
   }
 

@@ -55,9 +55,7 @@ constexpr std::size_t LAS_SIGNATURE_BYTES = 4;
 constexpr std::size_t LAS_HEADER_BYTES_1_0 = 227; // LAS 1.0 to 1.2; the least any version takes
 constexpr std::size_t LAS_HEADER_BYTES_1_4 = 375; // with the 64-bit point count
 constexpr unsigned int LAS_LAST_MINOR_VERSION = 4;
-constexpr unsigned int LAS_LAST_POINT_FORMAT = 10;
-constexpr std::uint16_t LAS_POINT_RECORD_BYTES[LAS_LAST_POINT_FORMAT + 1] = {20, 28, 26, 34, 57, 63,
-                                                                               30, 36, 38, 59, 67};
+constexpr unsigned int LAS_LAST_POINT_FORMAT = 10; // LAS_POINT_RECORD_BYTES: Las_header.h
 constexpr unsigned int LAS_FIRST_EXTENDED_FORMAT = 6; // formats 6-10: 8-bit classification, 4-bit returns
 constexpr unsigned int LAS_COMPRESSION_BITS = 0xC0;   // of the format byte: LAZ
 constexpr unsigned int LAS_FORMAT_BITS = 0x3F;
