@@ -8,8 +8,8 @@
 
 #include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_decoder.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/integer_decompressor.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_coder.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/integer_coder.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/laz_items.h>
 
 #include <cstddef>
@@ -189,7 +189,7 @@ inline void read_chunk_table(std::istream& in, std::uint64_t file_size, std::uin
   {
     Arithmetic_decoder decoder;
     decoder.init(coded.data(), coded.data() + coded.size());
-    Integer_decompressor sizes(32, 2);
+    Integer_coder sizes(32, 2);
     sizes.init();
     std::uint32_t last_points = 0, last_bytes = 0;
     for(std::uint64_t c = 0; c < chunks; ++c)

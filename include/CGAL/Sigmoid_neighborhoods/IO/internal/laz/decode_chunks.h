@@ -8,8 +8,8 @@
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/Laz_layout.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/Layered_chunk_decoder.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/Pointwise_chunk_decoder.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/Layered_chunk_coder.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/Pointwise_chunk_coder.h>
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
@@ -27,17 +27,27 @@ namespace Sigmoid_neighborhoods {
 namespace internal {
 namespace laz {
 
-// The decoder of a file's compressor; one per thread, reused chunk after chunk.
-class Chunk_decoder
+// The coder of a file's compressor, both directions; one per thread, reused chunk after chunk.
+class Chunk_coder
 {
 public:
   // Decode_error for items the compressor does not read (wave packets, unknown versions).
-  explicit Chunk_decoder(const Layout& layout)
+  Chunk_coder(Compressor compressor, const std::vector<Item>& items)
   {
-    if(layout.compressor == POINTWISE_CHUNKED)
-      m_pointwise.emplace(layout.items);
+    if(compressor == POINTWISE_CHUNKED)
+      m_pointwise.emplace(items);
     else
-      m_layered.emplace(layout.items);
+      m_layered.emplace(items);
+  }
+  explicit Chunk_coder(const Layout& layout) : Chunk_coder(layout.compressor, layout.items) {}
+
+  // Appends the chunk of `count` (>= 1) records to `out`.
+  void encode(const unsigned char* records, std::size_t count, std::vector<unsigned char>& out)
+  {
+    if(m_pointwise)
+      m_pointwise->encode(records, count, out);
+    else
+      m_layered->encode(records, count, out);
   }
 
   void decode(const unsigned char* begin, const unsigned char* end, std::size_t count, unsigned char* out)
@@ -49,8 +59,8 @@ public:
   }
 
 private:
-  std::optional<Pointwise_chunk_decoder> m_pointwise;
-  std::optional<Layered_chunk_decoder> m_layered;
+  std::optional<Pointwise_chunk_coder> m_pointwise;
+  std::optional<Layered_chunk_coder> m_layered;
 };
 
 // Calls `sink(first_point, records, count)` for every chunk of `layout`, in the file's order, with its
@@ -64,7 +74,7 @@ void for_each_decoded_chunk(std::istream& in, const Layout& layout, std::size_t 
 {
   try
   {
-    Chunk_decoder check(layout); // refuses unread items here, once, before any chunk
+    Chunk_coder check(layout); // refuses unread items here, once, before any chunk
   }
   catch(const Decode_error& e)
   {
@@ -74,7 +84,7 @@ void for_each_decoded_chunk(std::istream& in, const Layout& layout, std::size_t 
   const std::size_t batch = thread_count<ConcurrencyTag>(threads);
   std::vector<unsigned char> coded;
   std::vector<std::vector<unsigned char>> records(batch);
-  std::optional<Chunk_decoder> single;
+  std::optional<Chunk_coder> single;
   std::vector<std::string> errors;
   for(std::size_t first = 0; first < chunks; first += batch)
   {
@@ -85,7 +95,7 @@ void for_each_decoded_chunk(std::istream& in, const Layout& layout, std::size_t 
     for(std::size_t i = 0; i < n; ++i)
       records[i].resize(std::size_t(layout.chunk_firsts[first + i + 1] - layout.chunk_firsts[first + i]) *
                         record_length);
-    const auto decode = [&](std::size_t i, Chunk_decoder& decoder) {
+    const auto decode = [&](std::size_t i, Chunk_coder& decoder) {
       const std::size_t c = first + i;
       const std::uint64_t begin = layout.chunk_starts[c], end = layout.chunk_starts[c + 1];
       try
@@ -105,7 +115,7 @@ void for_each_decoded_chunk(std::istream& in, const Layout& layout, std::size_t 
     if(n == 1) // the last chunk, or a file of one: no threads to wake
       decode(0, single ? *single : single.emplace(layout));
     else
-      for_each_index<ConcurrencyTag>(n, threads, [&] { return Chunk_decoder(layout); }, decode, 1);
+      for_each_index<ConcurrencyTag>(n, threads, [&] { return Chunk_coder(layout); }, decode, 1);
     for(const std::string& error : errors)
       if(!error.empty())
         throw Input_error(laz_error(error));

@@ -7,8 +7,8 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_POINT14_ITEMS_H
 
 #include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_decoder.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/integer_decompressor.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_coder.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/integer_coder.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/laz_items.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/predictors.h>
 
@@ -26,7 +26,7 @@ namespace laz {
 
 // The POINT14 item of LASzip's layered compression (LAZ 1.4, point formats 6 to 10; item version
 // 3) and what the other layered items share (RGB14, RGBNIR14 and BYTE14 are in
-// Layered_chunk_decoder.h). Every field of a chunk is coded in its own layer, each layer by its own
+// layered_items.h). Every field of a chunk is coded in its own layer, each layer by its own
 // arithmetic coder, and all models are kept once per scanner channel (4): a point is predicted from
 // the last point of its own channel. POINT14 decodes first and tells the other items the channel.
 
@@ -113,7 +113,7 @@ inline unsigned return_level_8ctx(unsigned n, unsigned r)
 }
 
 // The POINT14 item, version 3: nine layers.
-class Point14_decoder
+class Point14_coder
 {
 public:
   enum Layer_index
@@ -138,7 +138,7 @@ public:
     return names[i];
   }
 
-  Point14_decoder() = default;
+  Point14_coder() = default;
 
   // Starts a chunk from its first point (raw) and its nine layers; returns the first point's channel.
   unsigned start(const unsigned char* first, const Layer_bytes* layers)
@@ -263,6 +263,133 @@ public:
     return m_current;
   }
 
+  // Encoding a chunk: start_encoding() with its first record, encode() with each next one (it returns
+  // the point's scanner channel, for the other items), then finish_encoding() appends the nine layers
+  // (nullptr for a layer that codes no change, written as 0 bytes; the XY and Z layers always are).
+  unsigned start_encoding(const unsigned char* first)
+  {
+    for(Arithmetic_encoder& e : m_encoders)
+      e.init();
+    m_changed.fill(false);
+    m_has.fill(true); // every model fresh
+    m_active = {false, false, false, false};
+    Point14_record record;
+    record.read(first);
+    m_current = record.scanner_channel();
+    activate(m_current, record);
+    return m_current;
+  }
+
+  unsigned encode(const unsigned char* in)
+  {
+    Point14_record item;
+    item.read(in);
+    Channel* ch = &*m_channels[m_current];
+    Arithmetic_encoder& xy = m_encoders[XY_LAYER];
+    const Point14_record& before = ch->last;
+    const unsigned lpr = (before.return_number() == 1 ? 1u : 0u) |
+                         (before.return_number() >= before.number_of_returns() ? 2u : 0u) |
+                         (before.gps_time_changed ? 4u : 0u);
+    // The changes are those from the last point of the point's own channel, when it was met before.
+    const unsigned channel = item.scanner_channel();
+    const Point14_record& last = channel != m_current && m_active[channel] ? m_channels[channel]->last : before;
+    // GPS times compared as their bits (LASzip compares doubles: the same but for -0 after +0, which
+    // it would not record)
+    const bool gps_changed = item.gps_time != last.gps_time;
+    const unsigned last_n = last.number_of_returns(), last_r = last.return_number();
+    const unsigned n = item.number_of_returns(), r = item.return_number();
+    unsigned changed = (channel != m_current ? 64u : 0u) | (item.point_source != last.point_source ? 32u : 0u) |
+                       (gps_changed ? 16u : 0u) | (item.scan_angle != last.scan_angle ? 8u : 0u) |
+                       (n != last_n ? 4u : 0u);
+    if(r != last_r)
+      changed |= r == ((last_r + 1) & 15u) ? 1u : r == ((last_r + 15) & 15u) ? 2u : 3u;
+    xy.encode_symbol(ch->changed_values[lpr], changed);
+    if(changed & 64u)
+    {
+      xy.encode_symbol(ch->scanner_channel[0], ((channel - m_current) & 3u) - 1u);
+      if(!m_active[channel])
+        activate(channel, before);
+      m_current = channel;
+      ch = &*m_channels[channel];
+    }
+    Point14_record& reference = ch->last; // `last`, or its copy in a channel just met
+    if(changed & 4u)
+      xy.encode_symbol(ch->number_of_returns[last_n], n);
+    if((changed & 3u) == 3u)
+    {
+      if(gps_changed)
+        xy.encode_symbol(ch->return_number[last_r], r);
+      else
+        xy.encode_symbol(ch->return_number_gps_same[0], (r - last_r - 2) & 15u);
+    }
+
+    const unsigned m = return_map_6ctx()[n][r];
+    const unsigned level = return_level_8ctx(n, r);
+    const unsigned cpr = (r == 1 ? 1u : 0u) | (r >= n ? 2u : 0u);
+    const unsigned single = n == 1 ? 1u : 0u;
+
+    const unsigned xy_slot = (m << 1) | (gps_changed ? 1u : 0u);
+    std::int32_t diff = std::int32_t(item.x - reference.x);
+    ch->dx.compress(xy, ch->x_median[xy_slot].get(), diff, single);
+    ch->x_median[xy_slot].add(diff);
+    unsigned k = ch->dx.k();
+    diff = std::int32_t(item.y - reference.y);
+    ch->dy.compress(xy, ch->y_median[xy_slot].get(), diff, single + (k < 20 ? (k & ~1u) : 20u));
+    ch->y_median[xy_slot].add(diff);
+
+    k = (ch->dx.k() + ch->dy.k()) / 2;
+    ch->z.compress(m_encoders[Z_LAYER], ch->last_z[level], std::int32_t(item.z), single + (k < 18 ? (k & ~1u) : 18u));
+    ch->last_z[level] = std::int32_t(item.z);
+
+    m_changed[CLASSIFICATION_LAYER] = m_changed[CLASSIFICATION_LAYER] || item.classification != reference.classification;
+    m_encoders[CLASSIFICATION_LAYER].encode_symbol(
+      ch->classification[((reference.classification & 0x1Fu) << 1) | (cpr == 3 ? 1u : 0u)], item.classification);
+
+    const unsigned last_flags = ((reference.flags >> 2) & 0x30u) | (reference.flags & 0x0Fu);
+    const unsigned flags = ((item.flags >> 2) & 0x30u) | (item.flags & 0x0Fu);
+    m_changed[FLAGS_LAYER] = m_changed[FLAGS_LAYER] || flags != last_flags;
+    m_encoders[FLAGS_LAYER].encode_symbol(ch->flags[last_flags], flags);
+
+    m_changed[INTENSITY_LAYER] = m_changed[INTENSITY_LAYER] || item.intensity != reference.intensity;
+    const unsigned intensity_slot = (cpr << 1) | (gps_changed ? 1u : 0u);
+    ch->intensity.compress(m_encoders[INTENSITY_LAYER], ch->last_intensity[intensity_slot], item.intensity, cpr);
+    ch->last_intensity[intensity_slot] = item.intensity;
+
+    if(changed & 8u)
+    {
+      m_changed[SCAN_ANGLE_LAYER] = true;
+      ch->scan_angle.compress(m_encoders[SCAN_ANGLE_LAYER], std::int16_t(reference.scan_angle),
+                              std::int16_t(item.scan_angle), gps_changed ? 1u : 0u);
+    }
+
+    m_changed[USER_DATA_LAYER] = m_changed[USER_DATA_LAYER] || item.user_data != reference.user_data;
+    m_encoders[USER_DATA_LAYER].encode_symbol(ch->user_data[reference.user_data >> 2], item.user_data);
+
+    if(changed & 32u)
+    {
+      m_changed[POINT_SOURCE_LAYER] = true;
+      ch->point_source.compress(m_encoders[POINT_SOURCE_LAYER], reference.point_source, item.point_source);
+    }
+    if(gps_changed)
+    {
+      m_changed[GPS_TIME_LAYER] = true;
+      encode_gps_time(*ch, item.gps_time);
+    }
+    reference = item;
+    reference.gps_time_changed = gps_changed;
+    return m_current;
+  }
+
+  void finish_encoding(std::vector<const std::vector<unsigned char>*>& layers)
+  {
+    m_changed[XY_LAYER] = m_changed[Z_LAYER] = true;
+    for(std::size_t i = 0; i < LAYER_COUNT; ++i)
+    {
+      m_encoders[i].done();
+      layers.push_back(m_changed[i] ? &m_encoders[i].bytes() : nullptr);
+    }
+  }
+
 private:
   // The GPS time coder: a change is coded as a multiple of the last difference, as a new
   // difference, as a jump to one of four remembered time sequences, or in full.
@@ -296,7 +423,7 @@ private:
     Lazy_models<1, GPS_SYMBOLS> gps_multi;
     Lazy_models<1, 5> gps_0diff;
 
-    Integer_decompressor dx, dy, z, intensity, scan_angle, point_source, gps;
+    Integer_coder dx, dy, z, intensity, scan_angle, point_source, gps;
   };
 
   // A channel's first use in a chunk: every model fresh, every prediction from `from`.
@@ -365,6 +492,65 @@ private:
     ch.gps_current = ch.gps_next;
     ch.gps_diff[ch.gps_current] = 0;
     ch.gps_extremes[ch.gps_current] = 0;
+  }
+
+  // A new time in sequence `ch.gps_current`: as decode_gps_time() reads it (LASzip's choices).
+  void encode_gps_time(Channel& ch, std::uint64_t time)
+  {
+    Arithmetic_encoder& e = m_encoders[GPS_TIME_LAYER];
+    for(;;) // at most one jump: the sequence jumped to holds a time within 32 bits
+    {
+      const unsigned s = ch.gps_current;
+      std::int32_t diff;
+      if(gps_time_difference(time, ch.gps_last[s], diff))
+      {
+        if(ch.gps_diff[s] == 0)
+        {
+          e.encode_symbol(ch.gps_0diff[0], 0);
+          ch.gps.compress(e, 0, diff, 0);
+          ch.gps_diff[s] = diff;
+          ch.gps_extremes[s] = 0;
+        }
+        else
+        {
+          const Gps_step_code c = gps_step_code(diff, ch.gps_diff[s]);
+          e.encode_symbol(ch.gps_multi[0], c.symbol);
+          ch.gps.compress(e, c.prediction, diff, c.context);
+          if(c.on_step)
+            ch.gps_extremes[s] = 0;
+          else if(c.off_step)
+            count_extreme(ch, s, diff);
+        }
+        ch.gps_last[s] = time;
+        return;
+      }
+      unsigned other = 1;
+      std::int32_t unused;
+      while(other < 4 && !gps_time_difference(time, ch.gps_last[(s + other) & 3u], unused))
+        ++other;
+      const bool after_zero = ch.gps_diff[s] == 0;
+      if(other < 4)
+      {
+        if(after_zero)
+          e.encode_symbol(ch.gps_0diff[0], other + 1);
+        else
+          e.encode_symbol(ch.gps_multi[0], GPS_FULL + other);
+        ch.gps_current = (s + other) & 3u;
+        continue;
+      }
+      if(after_zero)
+        e.encode_symbol(ch.gps_0diff[0], 1);
+      else
+        e.encode_symbol(ch.gps_multi[0], GPS_FULL);
+      ch.gps.compress(e, std::int32_t(std::uint32_t(ch.gps_last[s] >> 32)), std::int32_t(std::uint32_t(time >> 32)), 8);
+      e.write_int(std::uint32_t(time));
+      ch.gps_next = (ch.gps_next + 1) & 3u;
+      ch.gps_current = ch.gps_next;
+      ch.gps_diff[ch.gps_current] = 0;
+      ch.gps_extremes[ch.gps_current] = 0;
+      ch.gps_last[ch.gps_current] = time;
+      return;
+    }
   }
 
   void decode_gps_time(Channel& ch)
@@ -441,6 +627,8 @@ private:
 
   std::array<Arithmetic_decoder, LAYER_COUNT> m_decoders;
   std::array<bool, LAYER_COUNT> m_has{};
+  std::array<Arithmetic_encoder, LAYER_COUNT> m_encoders;
+  std::array<bool, LAYER_COUNT> m_changed{};
   std::array<std::optional<Channel>, 4> m_channels;
   std::array<bool, 4> m_active{};
   unsigned m_current = 0;

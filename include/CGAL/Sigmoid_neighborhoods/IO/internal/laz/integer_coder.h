@@ -3,10 +3,10 @@
 //
 // Author(s): Sigmoid_neighborhoods contributors
 
-#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_INTEGER_DECOMPRESSOR_H
-#define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_INTEGER_DECOMPRESSOR_H
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_INTEGER_CODER_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_INTEGER_CODER_H
 
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_decoder.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_coder.h>
 
 #include <CGAL/assertions.h>
 
@@ -24,11 +24,11 @@ namespace laz {
 // of a per-context model; its position within the class is a symbol of a per-k model, or for
 // k > bits_high the top bits_high bits a symbol and the rest raw bits. Numbers wrap modulo the
 // range (2^bits, or `range` when given), as the encoder folded them. It holds models alone: the
-// arithmetic decoder of its stream comes with each call, as LASzip's and laz-perf's encoders take it.
-class Integer_decompressor
+// arithmetic coder of its stream comes with each call, so that one object compresses and decompresses.
+class Integer_coder
 {
 public:
-  explicit Integer_decompressor(std::uint32_t bits = 16, std::uint32_t contexts = 1, std::uint32_t bits_high = 8,
+  explicit Integer_coder(std::uint32_t bits = 16, std::uint32_t contexts = 1, std::uint32_t bits_high = 8,
                                 std::uint32_t range = 0)
     : m_bits_high(bits_high)
   {
@@ -90,10 +90,59 @@ public:
     return std::int32_t(real);
   }
 
+  // Codes `real` against `prediction`: what decompress() with the same prediction and context gives back.
+  void compress(Arithmetic_encoder& encoder, std::int32_t prediction, std::int32_t real, std::uint32_t context = 0)
+  {
+    CGAL_precondition(context < m_k_models.size());
+    // The corrector folded into [min, min + range): 32-bit wrapping arithmetic, as LASzip's (its
+    // signed overflow wraps on every platform it runs on).
+    std::uint32_t corrector = std::uint32_t(real) - std::uint32_t(prediction);
+    if(m_range != 0)
+    {
+      const std::int32_t c = std::int32_t(corrector);
+      const std::int32_t max_corrector = std::int32_t(std::uint32_t(m_min_corrector) + m_range - 1u);
+      if(c < m_min_corrector)
+        corrector += m_range;
+      else if(c > max_corrector)
+        corrector -= m_range;
+    }
+    write_corrector(encoder, std::int32_t(corrector), m_k_models[context]);
+  }
+
   // The magnitude class of the last corrector: later predictions use it as a context.
   std::uint32_t k() const { return m_k; }
 
 private:
+  void write_corrector(Arithmetic_encoder& encoder, std::int32_t c, Arithmetic_model& k_model)
+  {
+    // k: the smallest with c in [-(2^k - 1), 2^k]
+    std::uint32_t magnitude = c <= 0 ? 0u - std::uint32_t(c) : std::uint32_t(c) - 1u;
+    std::uint32_t k = 0;
+    for(; magnitude != 0; magnitude >>= 1)
+      ++k;
+    m_k = k;
+    encoder.encode_symbol(k_model, k);
+    if(k == 0)
+    {
+      encoder.encode_bit(m_low_bit, std::uint32_t(c));
+      return;
+    }
+    if(k >= 32)
+      return; // the range's minimum: the class says it all
+    // c moved into [0, 2^k): the negative half below 2^(k-1), the positive one above
+    const std::uint32_t position =
+      c < 0 ? std::uint32_t(c) + ((std::uint32_t(1) << k) - 1u) : std::uint32_t(c) - 1u;
+    Arithmetic_model& model = m_position_models[k - 1];
+    if(k <= m_bits_high)
+      encoder.encode_symbol(model, position);
+    else
+    {
+      const std::uint32_t raw = k - m_bits_high;
+      encoder.encode_symbol(model, position >> raw);
+      encoder.write_bits(raw, position & ((std::uint32_t(1) << raw) - 1u));
+    }
+  }
+
   std::int32_t read_corrector(Arithmetic_decoder& decoder, Arithmetic_model& k_model)
   {
     const std::uint32_t k = m_k = decoder.decode_symbol(k_model); // <= corrector bits
@@ -132,4 +181,4 @@ private:
 } // namespace CGAL
 /// \endcond
 
-#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_INTEGER_DECOMPRESSOR_H
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_INTEGER_CODER_H

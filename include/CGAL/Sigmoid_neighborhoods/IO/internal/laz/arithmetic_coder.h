@@ -3,8 +3,8 @@
 //
 // Author(s): Sigmoid_neighborhoods contributors
 
-#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_ARITHMETIC_DECODER_H
-#define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_ARITHMETIC_DECODER_H
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_ARITHMETIC_CODER_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_ARITHMETIC_CODER_H
 
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/laz_items.h>
 
@@ -19,8 +19,9 @@ namespace Sigmoid_neighborhoods {
 namespace internal {
 namespace laz {
 
-// The range decoder of LASzip (an adaptation of Amir Said's FastAC: 32-bit interval, adaptive models
-// that rebuild their cumulative counts only now and then). Compressed LAZ data is defined by this
+// The range coder of LASzip (an adaptation of Amir Said's FastAC: 32-bit interval, adaptive models
+// that rebuild their cumulative counts only now and then), both directions: the models are shared,
+// Arithmetic_decoder reads and Arithmetic_encoder writes. Compressed LAZ data is defined by this
 // coder bit for bit, so every constant and rounding below is the format's, not a tuning choice.
 namespace coder {
 constexpr std::uint32_t MIN_LENGTH = 0x01000000u; // below it the interval takes a byte more
@@ -49,6 +50,7 @@ public:
 
 private:
   friend class Arithmetic_decoder;
+  friend class Arithmetic_encoder;
 
   void update()
   {
@@ -109,6 +111,7 @@ public:
 
 private:
   friend class Arithmetic_decoder;
+  friend class Arithmetic_encoder;
 
   // Rebuilds the cumulative distribution (and the table) from the counts, then sets how many symbols
   // pass before the next rebuild: a little more each time, up to a ceiling.
@@ -333,10 +336,157 @@ private:
   std::uint32_t m_value = 0, m_length = coder::MAX_LENGTH;
 };
 
+// Encodes what Arithmetic_decoder decodes, byte for byte as LASzip's encoder writes it: `base` is the
+// low end of the current interval of `length`; each decision narrows it, a byte leaves at the top
+// whenever the length falls below MIN_LENGTH, and a sum that overflows `base` carries into the bytes
+// already written. The bytes grow in a vector (`bytes()`), ready after `done()`.
+class Arithmetic_encoder
+{
+public:
+  // Starts a new stream (the bytes of the last one are dropped; their storage is kept).
+  void init()
+  {
+    m_bytes.clear();
+    m_base = 0;
+    m_length = coder::MAX_LENGTH;
+  }
+
+  const std::vector<unsigned char>& bytes() const { return m_bytes; }
+
+  void encode_bit(Arithmetic_bit_model& m, std::uint32_t bit)
+  {
+    const std::uint32_t split = m.m_zero_probability * (m_length >> coder::BIT_LENGTH_SHIFT);
+    if(bit == 0)
+    {
+      m_length = split;
+      ++m.m_zeros;
+    }
+    else
+    {
+      add_to_base(split);
+      m_length -= split;
+    }
+    if(m_length < coder::MIN_LENGTH)
+      renormalize();
+    if(--m.m_until_update == 0)
+      m.update();
+  }
+
+  void encode_symbol(Arithmetic_model& m, std::uint32_t symbol)
+  {
+    CGAL_precondition(symbol < m.m_symbols);
+    const std::uint32_t* cumulative = m.m_storage.data();
+    if(symbol == m.m_symbols - 1) // the last symbol's interval ends where the current one does
+    {
+      const std::uint32_t low = cumulative[symbol] * (m_length >> coder::SYMBOL_LENGTH_SHIFT);
+      add_to_base(low);
+      m_length -= low;
+    }
+    else
+    {
+      m_length >>= coder::SYMBOL_LENGTH_SHIFT;
+      const std::uint32_t low = cumulative[symbol] * m_length;
+      add_to_base(low);
+      m_length = cumulative[symbol + 1] * m_length - low;
+    }
+    if(m_length < coder::MIN_LENGTH)
+      renormalize();
+    ++m.m_storage[m.m_symbols + symbol];
+    if(--m.m_until_update == 0)
+      m.update();
+  }
+
+  // `bits` (1 to 32) equiprobable bits of `value`, as read_bits() reads them.
+  void write_bits(std::uint32_t bits, std::uint32_t value)
+  {
+    CGAL_precondition(bits >= 1 && bits <= 32 && (bits == 32 || (value >> bits) == 0));
+    if(bits > 19)
+    {
+      write_short(std::uint16_t(value & 0xFFFFu));
+      value >>= 16;
+      bits -= 16;
+    }
+    write_uniform(bits, value);
+  }
+
+  void write_byte(std::uint8_t value) { write_uniform(8, value); }
+  void write_short(std::uint16_t value) { write_uniform(16, value); }
+  void write_int(std::uint32_t value)
+  {
+    write_short(std::uint16_t(value & 0xFFFFu));
+    write_short(std::uint16_t(value >> 16));
+  }
+  void write_int64(std::uint64_t value)
+  {
+    write_int(std::uint32_t(value));
+    write_int(std::uint32_t(value >> 32));
+  }
+
+  // Ends the stream: the bytes that place the code inside the final interval, then the two or three
+  // zero bytes that LASzip's decoder reads ahead (a decoder fetches four bytes at its start).
+  void done()
+  {
+    bool another_byte = true;
+    if(m_length > 2 * coder::MIN_LENGTH)
+    {
+      add_to_base(coder::MIN_LENGTH);
+      m_length = coder::MIN_LENGTH >> 1; // one more byte settles it
+    }
+    else
+    {
+      add_to_base(coder::MIN_LENGTH >> 1);
+      m_length = coder::MIN_LENGTH >> 9; // two more bytes
+      another_byte = false;
+    }
+    renormalize();
+    m_bytes.push_back(0);
+    m_bytes.push_back(0);
+    if(another_byte)
+      m_bytes.push_back(0);
+  }
+
+private:
+  void write_uniform(std::uint32_t bits, std::uint32_t value)
+  {
+    m_length >>= bits;
+    add_to_base(value * m_length);
+    if(m_length < coder::MIN_LENGTH)
+      renormalize();
+  }
+
+  // base += x, the carry of a wrap added to the bytes written (a run of 0xFF turns to zeros).
+  void add_to_base(std::uint32_t x)
+  {
+    const std::uint32_t before = m_base;
+    m_base += x;
+    if(m_base < before)
+    {
+      std::size_t i = m_bytes.size();
+      while(i > 0 && m_bytes[i - 1] == 0xFFu)
+        m_bytes[--i] = 0;
+      CGAL_assertion(i > 0); // the first byte never carries out: the interval starts below 2^32
+      if(i > 0)
+        ++m_bytes[i - 1];
+    }
+  }
+
+  void renormalize()
+  {
+    do
+    {
+      m_bytes.push_back(static_cast<unsigned char>(m_base >> 24));
+      m_base <<= 8;
+    } while((m_length <<= 8) < coder::MIN_LENGTH);
+  }
+
+  std::vector<unsigned char> m_bytes;
+  std::uint32_t m_base = 0, m_length = coder::MAX_LENGTH;
+};
+
 } // namespace laz
 } // namespace internal
 } // namespace Sigmoid_neighborhoods
 } // namespace CGAL
 /// \endcond
 
-#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_ARITHMETIC_DECODER_H
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_ARITHMETIC_CODER_H

@@ -3,20 +3,18 @@
 //
 // Author(s): Sigmoid_neighborhoods contributors
 
-#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_POINTWISE_CHUNK_DECODER_H
-#define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_POINTWISE_CHUNK_DECODER_H
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_POINTWISE_ITEMS_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_POINTWISE_ITEMS_H
 
 #include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_decoder.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/integer_decompressor.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/laz_items.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_coder.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/integer_coder.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/predictors.h>
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <string>
 #include <vector>
 
 /// \cond SKIP_IN_MANUAL
@@ -25,9 +23,9 @@ namespace Sigmoid_neighborhoods {
 namespace internal {
 namespace laz {
 
-// LASzip's point-wise chunked compression (compressor 2, LAS point formats 0 to 5), items of version 2.
-// In a chunk the first record is stored raw; every item then predicts its next value from the record
-// before and codes what differs, all items sharing one arithmetic coder, record after record.
+// The items of LASzip's point-wise chunked compression (compressor 2, LAS point formats 0 to 5),
+// version 2, in both directions: each holds what it predicts from (the record before, its models),
+// init() starts a chunk from its raw first record, decode() and encode() code the next one.
 
 namespace pointwise {
 
@@ -41,12 +39,12 @@ constexpr unsigned char RETURN_CONTEXT[8][8] = {
 
 // POINT10 (20 bytes): X, Y, Z (int32), intensity (uint16), return bits, classification, scan angle
 // rank, user data (bytes), point source ID (uint16).
-class Point10_decoder
+class Point10_coder
 {
 public:
   static constexpr std::size_t SIZE = 20;
 
-  Point10_decoder()
+  Point10_coder()
     : m_changed(64), m_intensity_ic(16, 4), m_source_ic(16), m_scan_angle{{Arithmetic_model(256), Arithmetic_model(256)}},
       m_dx(32, 2), m_dy(32, 22), m_dz(32, 20)
   {}
@@ -132,12 +130,69 @@ public:
     store_little_endian<std::uint16_t>(out + 18, m_source);
   }
 
+  void encode(Arithmetic_encoder& e, const unsigned char* in)
+  {
+    const std::int32_t x = load_little_endian<std::int32_t>(in), y = load_little_endian<std::int32_t>(in + 4),
+                       z = load_little_endian<std::int32_t>(in + 8);
+    const std::uint16_t intensity = load_little_endian<std::uint16_t>(in + 12);
+    const std::uint8_t returns = in[14], classification = in[15], scan = in[16], user = in[17];
+    const std::uint16_t source = load_little_endian<std::uint16_t>(in + 18);
+    const unsigned r = returns & 7u, n = (returns >> 3) & 7u;
+    const unsigned m = RETURN_CONTEXT[n][r];
+    const unsigned level = n > r ? n - r : r - n;
+
+    // the intensity against the last of its return context, the rest against the record before
+    const std::uint32_t changed = (returns != m_returns ? 32u : 0u) | (intensity != m_last_intensity[m] ? 16u : 0u) |
+                                  (classification != m_class ? 8u : 0u) | (scan != m_scan ? 4u : 0u) |
+                                  (user != m_user ? 2u : 0u) | (source != m_source ? 1u : 0u);
+    e.encode_symbol(m_changed, changed);
+    if(changed & 32)
+      e.encode_symbol(m_return_models[m_returns], returns);
+    if(changed & 16)
+    {
+      m_intensity_ic.compress(e, m_last_intensity[m], intensity, m < 3 ? m : 3);
+      m_last_intensity[m] = intensity;
+    }
+    if(changed & 8)
+      e.encode_symbol(m_class_models[m_class], classification);
+    if(changed & 4)
+      e.encode_symbol(m_scan_angle[(returns >> 6) & 1u], std::uint8_t(scan - m_scan));
+    if(changed & 2)
+      e.encode_symbol(m_user_models[m_user], user);
+    if(changed & 1)
+      m_source_ic.compress(e, m_source, source);
+
+    const std::uint32_t single = n == 1 ? 1 : 0;
+    std::int32_t diff = std::int32_t(std::uint32_t(x) - std::uint32_t(m_x));
+    m_dx.compress(e, m_x_median[m].get(), diff, single);
+    m_x_median[m].add(diff);
+
+    std::uint32_t k = m_dx.k();
+    diff = std::int32_t(std::uint32_t(y) - std::uint32_t(m_y));
+    m_dy.compress(e, m_y_median[m].get(), diff, single + (k < 20 ? k & ~1u : 20));
+    m_y_median[m].add(diff);
+
+    k = (m_dx.k() + m_dy.k()) / 2;
+    m_dz.compress(e, m_last_z[level], z, single + (k < 18 ? k & ~1u : 18));
+    m_last_z[level] = z;
+
+    m_x = x;
+    m_y = y;
+    m_z = z;
+    m_intensity = intensity;
+    m_returns = returns;
+    m_class = classification;
+    m_scan = scan;
+    m_user = user;
+    m_source = source;
+  }
+
 private:
   Arithmetic_model m_changed;
-  Integer_decompressor m_intensity_ic, m_source_ic;
+  Integer_coder m_intensity_ic, m_source_ic;
   std::array<Arithmetic_model, 2> m_scan_angle; // by scan direction
   Lazy_models<256, 256> m_return_models, m_class_models, m_user_models; // by the previous byte
-  Integer_decompressor m_dx, m_dy, m_dz;
+  Integer_coder m_dx, m_dy, m_dz;
   Streaming_median5 m_x_median[16], m_y_median[16];
   std::uint16_t m_last_intensity[16];
   std::int32_t m_last_z[8];
@@ -149,12 +204,12 @@ private:
 // GPSTIME11 (8 bytes, a double coded as its 64-bit pattern). Up to four time series are followed at
 // once (scanners interleave them); within one, the difference from the last time is predicted as a
 // multiple of the series' usual step.
-class Gps_time11_decoder
+class Gps_time11_coder
 {
 public:
   static constexpr std::size_t SIZE = 8;
 
-  Gps_time11_decoder()
+  Gps_time11_coder()
     : m_multiple(MULTIPLE_SYMBOLS), m_after_zero(6), m_ic(32, 9)
   {}
 
@@ -249,7 +304,68 @@ public:
     store_little_endian<std::uint64_t>(out, m_time[m_current]);
   }
 
+  void encode(Arithmetic_encoder& e, const unsigned char* in)
+  {
+    const std::uint64_t time = load_little_endian<std::uint64_t>(in);
+    // A switch to another series codes the time again in that one (at most three switches: the
+    // series switched to holds a time within 32 bits).
+    for(;;)
+    {
+      const bool after_zero = m_step[m_current] == 0;
+      if(time == m_time[m_current])
+      {
+        e.encode_symbol(after_zero ? m_after_zero : m_multiple, after_zero ? 0u : UNCHANGED);
+        return;
+      }
+      std::int32_t diff;
+      if(gps_time_difference(time, m_time[m_current], diff))
+      {
+        if(after_zero)
+        {
+          e.encode_symbol(m_after_zero, 1);
+          m_ic.compress(e, 0, diff, 0);
+          m_step[m_current] = diff;
+          m_off_step[m_current] = 0;
+        }
+        else
+          encode_multiple(e, diff);
+        m_time[m_current] = time;
+        return;
+      }
+      std::uint32_t other = 1;
+      std::int32_t unused;
+      while(other < 4 && !gps_time_difference(time, m_time[(m_current + other) & 3u], unused))
+        ++other;
+      if(other == 4)
+      {
+        e.encode_symbol(after_zero ? m_after_zero : m_multiple, after_zero ? 2u : NEW_SERIES);
+        m_ic.compress(e, std::int32_t(std::uint32_t(m_time[m_current] >> 32)), std::int32_t(std::uint32_t(time >> 32)), 8);
+        e.write_int(std::uint32_t(time));
+        m_newest = (m_newest + 1) & 3u;
+        m_current = m_newest;
+        m_step[m_current] = 0;
+        m_off_step[m_current] = 0;
+        m_time[m_current] = time;
+        return;
+      }
+      e.encode_symbol(after_zero ? m_after_zero : m_multiple, after_zero ? other + 2 : NEW_SERIES + other);
+      m_current = (m_current + other) & 3u;
+    }
+  }
+
 private:
+  // A difference within 32 bits in a series with a step: as a multiple of the step, mirroring decode().
+  void encode_multiple(Arithmetic_encoder& e, std::int32_t diff)
+  {
+    const Gps_step_code c = gps_step_code(diff, m_step[m_current]);
+    e.encode_symbol(m_multiple, c.symbol);
+    m_ic.compress(e, c.prediction, diff, c.context);
+    if(c.on_step)
+      m_off_step[m_current] = 0;
+    else if(c.off_step)
+      count_off_step(diff);
+  }
+
   static constexpr std::uint32_t MULTIPLE = 500;
   static constexpr std::int32_t MULTIPLE_MINUS = -10;
   static constexpr std::uint32_t UNCHANGED = MULTIPLE + 10 + 1;   // 511
@@ -279,7 +395,7 @@ private:
   }
 
   Arithmetic_model m_multiple, m_after_zero;
-  Integer_decompressor m_ic;
+  Integer_coder m_ic;
   std::uint64_t m_time[4];
   std::int32_t m_step[4];
   std::int32_t m_off_step[4];
@@ -288,12 +404,12 @@ private:
 
 // RGB12 (three uint16). A mask says which bytes changed; each changed byte is coded as its
 // difference from a prediction, green and blue predicted from red's change (predict_rgb()).
-class Rgb12_decoder
+class Rgb12_coder
 {
 public:
   static constexpr std::size_t SIZE = 6;
 
-  Rgb12_decoder()
+  Rgb12_coder()
     : m_mask(128),
       m_byte{{Arithmetic_model(256), Arithmetic_model(256), Arithmetic_model(256), Arithmetic_model(256),
               Arithmetic_model(256), Arithmetic_model(256)}}
@@ -311,9 +427,26 @@ public:
   void decode(Arithmetic_decoder& d, unsigned char* out)
   {
     const unsigned mask = d.decode_symbol(m_mask);
-    m_last = predict_rgb(mask, m_last, [&](std::size_t byte) { return d.decode_symbol(m_byte[byte]); });
+    m_last = predict_rgb(mask, m_last, [&](std::size_t b, unsigned predicted) {
+      return (d.decode_symbol(m_byte[b]) + predicted) & 0xFFu;
+    });
     for(std::size_t i = 0; i < 3; ++i)
       store_little_endian<std::uint16_t>(out + 2 * i, m_last[i]);
+  }
+
+  void encode(Arithmetic_encoder& e, const unsigned char* in)
+  {
+    std::array<std::uint16_t, 3> rgb;
+    for(std::size_t i = 0; i < 3; ++i)
+      rgb[i] = load_little_endian<std::uint16_t>(in + 2 * i);
+    const unsigned mask = rgb_change_mask(m_last, rgb);
+    e.encode_symbol(m_mask, mask);
+    predict_rgb(mask, m_last, [&](std::size_t b, unsigned predicted) {
+      const unsigned actual = rgb_byte(rgb, b);
+      e.encode_symbol(m_byte[b], (actual - predicted) & 0xFFu);
+      return actual;
+    });
+    m_last = rgb;
   }
 
 private:
@@ -323,10 +456,10 @@ private:
 };
 
 // BYTE (extra bytes, any number): each byte coded as its difference from the record before.
-class Byte_decoder
+class Byte_coder
 {
 public:
-  explicit Byte_decoder(std::size_t size)
+  explicit Byte_coder(std::size_t size)
     : m_models(size, Arithmetic_model(256)), m_last(size, 0)
   {}
 
@@ -343,6 +476,15 @@ public:
       out[i] = m_last[i] = static_cast<unsigned char>(m_last[i] + d.decode_symbol(m_models[i]));
   }
 
+  void encode(Arithmetic_encoder& e, const unsigned char* in)
+  {
+    for(std::size_t i = 0; i < m_last.size(); ++i)
+    {
+      e.encode_symbol(m_models[i], static_cast<unsigned char>(in[i] - m_last[i]));
+      m_last[i] = in[i];
+    }
+  }
+
 private:
   std::vector<Arithmetic_model> m_models;
   std::vector<unsigned char> m_last;
@@ -350,168 +492,10 @@ private:
 
 } // namespace pointwise
 
-class Pointwise_chunk_decoder
-{
-public:
-  // Refuses, with Decode_error, any item but POINT10, GPSTIME11, RGB12 and BYTE of version 2, and
-  // those of another size than their type's.
-  explicit Pointwise_chunk_decoder(const std::vector<Item>& items)
-  {
-    for(const Item& item : items)
-    {
-      const std::string name = "item " + item_name(item.type) + " version " + std::to_string(item.version);
-      const bool known = item.type == POINT10 || item.type == GPSTIME11 || item.type == RGB12 || item.type == BYTE;
-      if(item.type == WAVEPACKET13)
-        throw Decode_error("the wave packets of point formats 4 and 5 (" + name + ") are not read");
-      if(!known || item.version != 2)
-        throw Decode_error(name + " is not read" + (known ? " (version 2 is)" : ""));
-      std::size_t expected = item.size;
-      Step step{Item_type(item.type), 0, m_record_length, item.size};
-      switch(item.type)
-      {
-      case POINT10:
-        expected = pointwise::Point10_decoder::SIZE;
-        step.index = m_points.size();
-        m_points.emplace_back();
-        break;
-      case GPSTIME11:
-        expected = pointwise::Gps_time11_decoder::SIZE;
-        step.index = m_times.size();
-        m_times.emplace_back();
-        break;
-      case RGB12:
-        expected = pointwise::Rgb12_decoder::SIZE;
-        step.index = m_colours.size();
-        m_colours.emplace_back();
-        break;
-      default: // BYTE
-        if(item.size == 0)
-          throw Decode_error(name + " has 0 bytes");
-        step.index = m_bytes.size();
-        m_bytes.emplace_back(item.size);
-        break;
-      }
-      if(item.size != expected)
-        throw Decode_error(name + " has " + std::to_string(item.size) + " bytes, not " + std::to_string(expected));
-      m_steps.push_back(step);
-      m_record_length += item.size;
-    }
-  }
-
-  std::size_t record_length() const { return m_record_length; }
-
-  // Decodes the `count` (>= 1) records of the chunk [begin, end) into out[0, count * record_length()).
-  void decode(const unsigned char* begin, const unsigned char* end, std::size_t count, unsigned char* out)
-  {
-    CGAL_precondition(count >= 1);
-    if(std::size_t(end - begin) < m_record_length)
-      throw Decode_error("the chunk of " + std::to_string(end - begin) + " bytes is shorter than its first record of " +
-                         std::to_string(m_record_length) + " bytes");
-    std::memcpy(out, begin, m_record_length);
-    for(const Step& s : m_steps)
-    {
-      const unsigned char* raw = out + s.offset;
-      switch(s.type)
-      {
-      case POINT10: m_points[s.index].init(raw); break;
-      case GPSTIME11: m_times[s.index].init(raw); break;
-      case RGB12: m_colours[s.index].init(raw); break;
-      default: m_bytes[s.index].init(raw); break;
-      }
-    }
-    if(count == 1)
-      return; // the coder's bytes are not needed
-    m_decoder.init(begin + m_record_length, end);
-
-    // The common records (a POINT10 item first, then at most one of each other) take a loop of
-    // their own, without the dispatch on item types.
-    if(is_simple())
-    {
-      pointwise::Point10_decoder& point = m_points[0];
-      pointwise::Gps_time11_decoder* time = m_times.empty() ? nullptr : &m_times[0];
-      pointwise::Rgb12_decoder* colour = m_colours.empty() ? nullptr : &m_colours[0];
-      pointwise::Byte_decoder* bytes = m_bytes.empty() ? nullptr : &m_bytes[0];
-      const std::size_t time_at = time ? offset_of(GPSTIME11) : 0;
-      const std::size_t colour_at = colour ? offset_of(RGB12) : 0;
-      const std::size_t bytes_at = bytes ? offset_of(BYTE) : 0;
-      for(std::size_t p = 1; p < count; ++p)
-      {
-        unsigned char* record = out + p * m_record_length;
-        point.decode(m_decoder, record);
-        if(time)
-          time->decode(m_decoder, record + time_at);
-        if(colour)
-          colour->decode(m_decoder, record + colour_at);
-        if(bytes)
-          bytes->decode(m_decoder, record + bytes_at);
-      }
-      return;
-    }
-    for(std::size_t p = 1; p < count; ++p)
-    {
-      unsigned char* record = out + p * m_record_length;
-      for(const Step& s : m_steps)
-      {
-        unsigned char* item = record + s.offset;
-        switch(s.type)
-        {
-        case POINT10: m_points[s.index].decode(m_decoder, item); break;
-        case GPSTIME11: m_times[s.index].decode(m_decoder, item); break;
-        case RGB12: m_colours[s.index].decode(m_decoder, item); break;
-        default: m_bytes[s.index].decode(m_decoder, item); break;
-        }
-      }
-    }
-  }
-
-private:
-  struct Step
-  {
-    Item_type type;
-    std::size_t index;  // among the decoders of its type
-    std::size_t offset; // in the record
-    std::size_t size;
-  };
-
-  // POINT10 first, at most one item of each type, the others in LAS order: their decoding order is
-  // then the one of the general loop.
-  bool is_simple() const
-  {
-    if(m_steps.empty() || m_steps[0].type != POINT10 || m_points.size() != 1 || m_times.size() > 1 ||
-       m_colours.size() > 1 || m_bytes.size() > 1)
-      return false;
-    int rank = 0;
-    for(const Step& s : m_steps)
-    {
-      const int r = s.type == POINT10 ? 0 : s.type == GPSTIME11 ? 1 : s.type == RGB12 ? 2 : 3;
-      if(r < rank)
-        return false;
-      rank = r;
-    }
-    return true;
-  }
-
-  std::size_t offset_of(Item_type type) const
-  {
-    for(const Step& s : m_steps)
-      if(s.type == type)
-        return s.offset;
-    return 0;
-  }
-
-  Arithmetic_decoder m_decoder; // the chunk's one coder, handed to every item
-  std::vector<pointwise::Point10_decoder> m_points;
-  std::vector<pointwise::Gps_time11_decoder> m_times;
-  std::vector<pointwise::Rgb12_decoder> m_colours;
-  std::vector<pointwise::Byte_decoder> m_bytes;
-  std::vector<Step> m_steps;
-  std::size_t m_record_length = 0;
-};
-
 } // namespace laz
 } // namespace internal
 } // namespace Sigmoid_neighborhoods
 } // namespace CGAL
 /// \endcond
 
-#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_POINTWISE_CHUNK_DECODER_H
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_POINTWISE_ITEMS_H

@@ -3,12 +3,13 @@
 //
 // Author(s): Sigmoid_neighborhoods contributors
 
-#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_LAYERED_CHUNK_DECODER_H
-#define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_LAYERED_CHUNK_DECODER_H
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_LAYERED_CHUNK_CODER_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_LAYERED_CHUNK_CODER_H
 
 #include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_decoder.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/arithmetic_coder.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/laz_items.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/layered_items.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/point14_items.h>
 
 #include <algorithm>
@@ -26,178 +27,6 @@ namespace Sigmoid_neighborhoods {
 namespace internal {
 namespace laz {
 
-// The RGB14 item (one layer) and the RGBNIR14 item (two: RGB, then NIR), one model set and last
-// colour per scanner channel. In item version 3 (the one read), a switch back to a channel met before
-// in the chunk predicts that point from the previous channel's last colour and stores it there
-// (LASzip's v3 encoder and decoder both do).
-class Rgb14_decoder
-{
-public:
-  explicit Rgb14_decoder(bool nir) : m_nir(nir) {}
-
-  std::size_t layer_count() const { return m_nir ? 2 : 1; }
-
-  void start(const unsigned char* first, const Layer_bytes* layers, unsigned channel)
-  {
-    m_has_rgb = !layers[0].empty();
-    if(m_has_rgb)
-      m_rgb.init(layers[0].begin, layers[0].end);
-    m_has_nir = m_nir && !layers[1].empty();
-    if(m_has_nir)
-      m_nir_decoder.init(layers[1].begin, layers[1].end);
-    m_active = {false, false, false, false};
-    std::array<std::uint16_t, 4> values{};
-    for(std::size_t i = 0; i < (m_nir ? 4u : 3u); ++i)
-      values[i] = load_little_endian<std::uint16_t>(first + 2 * i);
-    m_current = channel;
-    activate(channel, values);
-  }
-
-  void decode(unsigned char* out, unsigned channel)
-  {
-    unsigned from = m_current; // whose last colour predicts this one
-    if(channel != m_current)
-    {
-      m_current = channel;
-      if(!m_active[channel])
-      {
-        activate(channel, m_channels[from].last);
-        from = channel;
-      }
-    }
-    Channel& ch = m_channels[m_current];
-    std::array<std::uint16_t, 4>& last = m_channels[from].last;
-
-    if(m_has_rgb)
-    {
-      const unsigned mask = m_rgb.decode_symbol(ch.used[0]);
-      const std::array<std::uint16_t, 3> rgb = predict_rgb(mask, {{last[0], last[1], last[2]}}, [&](std::size_t byte) {
-        return m_rgb.decode_symbol(ch.diff[byte]);
-      });
-      std::copy(rgb.begin(), rgb.end(), last.begin());
-    }
-    for(std::size_t i = 0; i < 3; ++i)
-      store_little_endian<std::uint16_t>(out + 2 * i, last[i]);
-
-    if(m_nir)
-    {
-      if(m_has_nir)
-      {
-        const unsigned sym = m_nir_decoder.decode_symbol(ch.nir_used[0]); // bit 0: low byte changed, bit 1: high
-        const unsigned lo = (sym & 1u) ? (m_nir_decoder.decode_symbol(ch.nir_diff[0]) + (last[3] & 0xFFu)) & 0xFFu
-                                       : last[3] & 0xFFu;
-        const unsigned hi = (sym & 2u) ? (m_nir_decoder.decode_symbol(ch.nir_diff[1]) + (last[3] >> 8)) & 0xFFu
-                                       : last[3] >> 8;
-        last[3] = std::uint16_t(lo | (hi << 8));
-      }
-      store_little_endian<std::uint16_t>(out + 6, last[3]);
-    }
-  }
-
-private:
-  struct Channel
-  {
-    std::array<std::uint16_t, 4> last{};
-    Lazy_models<1, 128> used;
-    Lazy_models<6, 256> diff;
-    Lazy_models<1, 4> nir_used;
-    Lazy_models<2, 256> nir_diff;
-  };
-
-  void activate(unsigned c, const std::array<std::uint16_t, 4>& from)
-  {
-    Channel& ch = m_channels[c];
-    ch.last = from;
-    ch.used.reset();
-    ch.diff.reset();
-    ch.nir_used.reset();
-    ch.nir_diff.reset();
-    m_active[c] = true;
-  }
-
-  bool m_nir;
-  Arithmetic_decoder m_rgb, m_nir_decoder;
-  bool m_has_rgb = false, m_has_nir = false;
-  std::array<Channel, 4> m_channels;
-  std::array<bool, 4> m_active{};
-  unsigned m_current = 0;
-};
-
-// The BYTE14 item: `n` extra bytes, each its own layer, each coded as a byte difference. Channel
-// switches as for Rgb14_decoder.
-class Byte14_decoder
-{
-public:
-  explicit Byte14_decoder(std::size_t n) : m_n(n), m_decoders(n), m_has(n, 0)
-  {
-    for(Channel& ch : m_channels)
-      ch.last.assign(n, 0);
-  }
-
-  std::size_t layer_count() const { return m_n; }
-
-  void start(const unsigned char* first, const Layer_bytes* layers, unsigned channel)
-  {
-    for(std::size_t i = 0; i < m_n; ++i)
-    {
-      m_has[i] = !layers[i].empty();
-      if(m_has[i])
-        m_decoders[i].init(layers[i].begin, layers[i].end);
-    }
-    m_active = {false, false, false, false};
-    m_current = channel;
-    activate(channel, first);
-  }
-
-  void decode(unsigned char* out, unsigned channel)
-  {
-    unsigned from = m_current;
-    if(channel != m_current)
-    {
-      m_current = channel;
-      if(!m_active[channel])
-      {
-        activate(channel, m_channels[from].last.data());
-        from = channel;
-      }
-    }
-    Channel& ch = m_channels[m_current];
-    unsigned char* last = m_channels[from].last.data();
-    for(std::size_t i = 0; i < m_n; ++i)
-    {
-      if(m_has[i])
-        last[i] = static_cast<unsigned char>(last[i] + m_decoders[i].decode_symbol(ch.models[i]));
-      out[i] = last[i];
-    }
-  }
-
-private:
-  struct Channel
-  {
-    std::vector<unsigned char> last;
-    std::vector<Arithmetic_model> models; // 256 symbols each, made on the channel's first use
-  };
-
-  void activate(unsigned c, const unsigned char* from)
-  {
-    Channel& ch = m_channels[c];
-    std::copy(from, from + m_n, ch.last.begin()); // `from` may be another channel's: distinct storage
-    if(ch.models.empty())
-      ch.models.assign(m_n, Arithmetic_model(256));
-    for(std::size_t i = 0; i < m_n; ++i)
-      if(m_has[i])
-        ch.models[i].init();
-    m_active[c] = true;
-  }
-
-  std::size_t m_n;
-  std::vector<Arithmetic_decoder> m_decoders;
-  std::vector<unsigned char> m_has;
-  std::array<Channel, 4> m_channels;
-  std::array<bool, 4> m_active{};
-  unsigned m_current = 0;
-};
-
 // A chunk of LASzip's layered compressor (compressor 3: LAS 1.4 point formats 6 to 10), decoded into
 // LAS records. A chunk is, in this order:
 //   - its first point, raw: a whole record as the LAS file stores it;
@@ -206,10 +35,10 @@ private:
 //   - the layers' bytes, in the same order.
 // Every layer is an arithmetic-coded stream of its own; a layer of 0 bytes is a field that keeps its
 // first value through the chunk. Nothing carries over from one chunk to the next.
-class Layered_chunk_decoder
+class Layered_chunk_coder
 {
 public:
-  explicit Layered_chunk_decoder(const std::vector<Item>& items)
+  explicit Layered_chunk_coder(const std::vector<Item>& items)
   {
     if(items.empty() || items[0].type != POINT14)
       throw Decode_error("the layered compression starts its records with a POINT14 item" +
@@ -243,8 +72,8 @@ public:
       if(item.type == POINT14)
       {
         m_point.emplace();
-        for(std::size_t l = 0; l < Point14_decoder::LAYER_COUNT; ++l)
-          m_layer_names.push_back("POINT14 " + std::string(Point14_decoder::layer_name(l)));
+        for(std::size_t l = 0; l < Point14_coder::LAYER_COUNT; ++l)
+          m_layer_names.push_back("POINT14 " + std::string(Point14_coder::layer_name(l)));
       }
       else if(item.type == BYTE14)
       {
@@ -330,6 +159,57 @@ public:
     }
   }
 
+  // Appends to `out` the chunk of the `count` (>= 1) records at `records`: what decode() reads back.
+  void encode(const unsigned char* records, std::size_t count, std::vector<unsigned char>& out)
+  {
+    CGAL_precondition(count >= 1 && count <= 0xFFFFFFFFu);
+    out.insert(out.end(), records, records + m_record_length);
+    unsigned char number[4];
+    store_little_endian<std::uint32_t>(number, std::uint32_t(count));
+    out.insert(out.end(), number, number + 4);
+
+    const unsigned first_channel = m_point->start_encoding(records);
+    for(const Part& p : m_parts)
+    {
+      if(p.type == BYTE14)
+        m_bytes[p.index].start_encoding(records + p.offset, first_channel);
+      else
+        m_colors[p.index].start_encoding(records + p.offset, first_channel);
+    }
+    const unsigned char* record = records;
+    for(std::size_t i = 1; i < count; ++i)
+    {
+      record += m_record_length;
+      const unsigned channel = m_point->encode(record);
+      for(const Part& p : m_parts)
+      {
+        if(p.type == BYTE14)
+          m_bytes[p.index].encode(record + p.offset, channel);
+        else
+          m_colors[p.index].encode(record + p.offset, channel);
+      }
+    }
+
+    m_encoded.clear();
+    m_point->finish_encoding(m_encoded);
+    for(const Part& p : m_parts)
+    {
+      if(p.type == BYTE14)
+        m_bytes[p.index].finish_encoding(m_encoded);
+      else
+        m_colors[p.index].finish_encoding(m_encoded);
+    }
+    CGAL_assertion(m_encoded.size() == m_layers.size());
+    for(const std::vector<unsigned char>* layer : m_encoded)
+    {
+      store_little_endian<std::uint32_t>(number, layer ? std::uint32_t(layer->size()) : 0u);
+      out.insert(out.end(), number, number + 4);
+    }
+    for(const std::vector<unsigned char>* layer : m_encoded)
+      if(layer)
+        out.insert(out.end(), layer->begin(), layer->end());
+  }
+
 private:
   // An item after POINT14, and where its bytes and layers lie.
   struct Part
@@ -338,12 +218,13 @@ private:
     std::size_t offset = 0, index = 0, first_layer = 0;
   };
 
-  std::optional<Point14_decoder> m_point;
-  std::vector<Rgb14_decoder> m_colors;
-  std::vector<Byte14_decoder> m_bytes;
+  std::optional<Point14_coder> m_point;
+  std::vector<Rgb14_coder> m_colors;
+  std::vector<Byte14_coder> m_bytes;
   std::vector<Part> m_parts;
   std::vector<std::string> m_layer_names; // for the messages
   std::vector<Layer_bytes> m_layers;      // this chunk's, one per layer name
+  std::vector<const std::vector<unsigned char>*> m_encoded; // the layers encode() wrote
   std::size_t m_record_length = 0;
 };
 
@@ -353,4 +234,4 @@ private:
 } // namespace CGAL
 /// \endcond
 
-#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_LAYERED_CHUNK_DECODER_H
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_IO_INTERNAL_LAZ_LAYERED_CHUNK_CODER_H
