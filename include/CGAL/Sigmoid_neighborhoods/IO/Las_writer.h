@@ -24,6 +24,46 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The public header block of a LAS 1.4 file laid out by `layout`, whose records, summed up by
+// `summary`, take `point_bytes` (compressed or not) and are followed by the layout's EVLRs;
+// `format_byte` is the point format as stored (LAZ sets bit 7).
+inline std::array<unsigned char, Las_output_layout::HEADER_BYTES>
+las_header_bytes(const Las_output_layout& layout, const Las_point_summary& summary, std::uint64_t point_bytes,
+                 unsigned int format_byte)
+{
+  std::array<unsigned char, Las_output_layout::HEADER_BYTES> h = layout.header;
+  unsigned char* b = h.data();
+  b[24] = 1;
+  b[25] = 4;
+  store_little_endian<std::uint16_t>(b + 94, std::uint16_t(h.size()));
+  const std::uint64_t point_data = h.size() + layout.vlrs.size();
+  if(point_data > (std::numeric_limits<std::uint32_t>::max)())
+    throw std::length_error("variable length records of " + std::to_string(layout.vlrs.size()) +
+                            " bytes: a LAS header points past them with 32 bits");
+  store_little_endian<std::uint32_t>(b + 96, std::uint32_t(point_data));
+  store_little_endian<std::uint32_t>(b + 100, layout.vlr_count);
+  b[104] = std::uint8_t(format_byte);
+  store_little_endian<std::uint16_t>(b + 105, layout.record_length);
+  for(int c = 0; c < 3; ++c)
+  {
+    store_little_endian<double>(b + 131 + 8 * c, layout.scale[c]);
+    store_little_endian<double>(b + 155 + 8 * c, layout.offset[c]);
+  }
+  store_las_point_summary(b, h.size(), summary);
+  const std::uint64_t evlrs = point_data + point_bytes;
+  const bool has_waveforms = layout.waveforms_in_evlrs != Las_output_layout::NO_WAVEFORMS;
+  store_little_endian<std::uint64_t>(b + 227, has_waveforms ? evlrs + layout.waveforms_in_evlrs : 0u);
+  store_little_endian<std::uint64_t>(b + 235, layout.evlr_count != 0 ? evlrs : 0u);
+  store_little_endian<std::uint32_t>(b + 243, layout.evlr_count);
+  return h;
+}
+
+} // namespace internal
+/// \endcond
+
 /*!
   \ingroup PkgSigmoidNeighborhoodsIO
   writes a LAS 1.4 file laid out by a `Las_output_layout`: its header and VLRs when made, the
@@ -80,31 +120,9 @@ private:
 
   void write_header()
   {
-    std::array<unsigned char, Las_output_layout::HEADER_BYTES> h = m_layout.header;
-    unsigned char* b = h.data();
-    b[24] = 1;
-    b[25] = 4;
-    store_little_endian<std::uint16_t>(b + 94, std::uint16_t(h.size()));
-    const std::uint64_t point_data = h.size() + m_layout.vlrs.size();
-    if(point_data > (std::numeric_limits<std::uint32_t>::max)())
-      throw std::length_error("variable length records of " + std::to_string(m_layout.vlrs.size()) +
-                              " bytes: a LAS header points past them with 32 bits");
-    store_little_endian<std::uint32_t>(b + 96, std::uint32_t(point_data));
-    store_little_endian<std::uint32_t>(b + 100, m_layout.vlr_count);
-    b[104] = std::uint8_t(m_layout.point_format);
-    store_little_endian<std::uint16_t>(b + 105, m_layout.record_length);
-    for(int c = 0; c < 3; ++c)
-    {
-      store_little_endian<double>(b + 131 + 8 * c, m_layout.scale[c]);
-      store_little_endian<double>(b + 155 + 8 * c, m_layout.offset[c]);
-    }
-    store_las_point_summary(b, h.size(), m_summary);
-    const std::uint64_t evlrs = point_data + m_summary.count * m_layout.record_length;
-    const bool has_waveforms = m_layout.waveforms_in_evlrs != Las_output_layout::NO_WAVEFORMS;
-    store_little_endian<std::uint64_t>(b + 227, has_waveforms ? evlrs + m_layout.waveforms_in_evlrs : 0u);
-    store_little_endian<std::uint64_t>(b + 235, m_layout.evlr_count != 0 ? evlrs : 0u);
-    store_little_endian<std::uint32_t>(b + 243, m_layout.evlr_count);
-    m_out.write(reinterpret_cast<const char*>(b), std::streamsize(h.size()));
+    const auto h =
+      internal::las_header_bytes(m_layout, m_summary, m_summary.count * m_layout.record_length, m_layout.point_format);
+    m_out.write(reinterpret_cast<const char*>(h.data()), std::streamsize(h.size()));
   }
 
   std::ostream& m_out;
