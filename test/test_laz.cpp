@@ -5,9 +5,14 @@
 // independent LASzip implementation gave (../shared/data/laz/README.md), on one thread and on
 // several; reads like its uncompressed twin through read_oriented_point_set(); damaged files (cut,
 // bytes flipped in a chunk, a lying chunk table, empty chunks, a layer that overruns its chunk) give
-// an Input_error naming the chunk, never a crash. Skipped when ../shared/data is not there.
+// an Input_error naming the chunk, never a crash. LAZ output: every shared file written again gives
+// its records back and, where LASzip or PDAL wrote it, its point data byte for byte; made-up records
+// of every compressed format (scanner channels, GPS time sequences, extra bytes, small chunks) come
+// back equal for any thread count. The shared files are skipped when ../shared/data is not there.
 
+#include <CGAL/Sigmoid_neighborhoods/IO/Laz_writer.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/laz/decode_chunks.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/las_output_layout_like.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_las.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 
@@ -15,8 +20,9 @@
 
 #include <catch2/catch.hpp>
 
-
 #include <cstdint>
+#include <cstring>
+#include <random>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -364,4 +370,165 @@ TEST_CASE("LAZ: damaged files are refused with the chunk named, never a crash", 
                         Catch::Contains("chunk 0 of 1"));
     }
   }
+}
+
+namespace {
+
+// The compressed point data of a LAZ file: from after the chunk table's offset to the table.
+std::string laz_point_data(const std::string& bytes)
+{
+  std::uint32_t at = 0;
+  std::uint64_t table = 0;
+  std::memcpy(&at, bytes.data() + 96, 4);
+  std::memcpy(&table, bytes.data() + at, 8);
+  REQUIRE(table > at + 8);
+  REQUIRE(table <= bytes.size());
+  return bytes.substr(at + 8, std::size_t(table - at - 8));
+}
+
+// Writes `records` as a LAZ file laid out by `layout`, `block` records per write() call.
+std::string write_laz(const std::string& name, const SN::Las_output_layout& layout, const std::string& records,
+                      unsigned int threads, std::uint32_t chunk_size = 50000, std::size_t block = 65536)
+{
+  const std::string path = laz_scratch() + "/" + name;
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  SN::Laz_writer<> writer(out, layout, threads, chunk_size);
+  const std::size_t length = layout.record_length;
+  for(std::size_t first = 0; first < records.size() / length; first += block)
+  {
+    const std::size_t count = (std::min)(block, records.size() / length - first);
+    writer.write(reinterpret_cast<const unsigned char*>(records.data()) + first * length, count);
+  }
+  writer.close();
+  REQUIRE(out.good());
+  return path;
+}
+
+} // namespace
+
+TEST_CASE("LAZ out: every shared file written again reads back its records, its point data as LASzip wrote it",
+          "[laz][io][laz-out]")
+{
+  if(!have_laz_data())
+    return;
+  for(const Laz_file& f : LAZ_FILES)
+  {
+    INFO(f.name);
+    const std::string path = LAZ_DIR + f.name;
+    const std::string records = decoded_records(path, 2);
+    const SN::Las_output_layout layout = SN::las_output_layout_like(path, {});
+    const std::string written = write_laz("again.laz", layout, records, 2);
+    CHECK(decoded_records(written, 2) == records);
+    const std::string bytes = file_bytes(written);
+    CHECK(std::uint8_t(bytes[104]) == (f.format | 0x80u));
+    // COPC's chunks follow its octree, with their own point counts: written again in chunks of 50,000
+    if(std::string(f.name) != "simple.copc.laz")
+      CHECK(laz_point_data(bytes) == laz_point_data(file_bytes(path)));
+    if(f.points > 50000)
+      CHECK(file_bytes(write_laz("again3.laz", layout, records, 3, 50000, 7919)) == bytes);
+  }
+}
+
+TEST_CASE("LAZ out: made-up records of formats 0-3 and 6-8 come back equal, for any thread count and chunk size",
+          "[laz][io][laz-out]")
+{
+  std::mt19937 random(2026);
+  auto uniform = [&](std::uint32_t n) { return std::uint32_t(random() % n); };
+  for(unsigned int format : {0u, 1u, 2u, 3u, 6u, 7u, 8u})
+    for(std::size_t extra : {std::size_t(0), std::size_t(5)})
+    {
+      INFO("format " << format << ", " << extra << " extra bytes");
+      SN::Las_output_layout layout;
+      layout.point_format = format;
+      layout.copied_record_length = std::uint16_t(SN::internal::LAS_POINT_RECORD_BYTES[format] + extra);
+      layout.record_length = layout.copied_record_length;
+      std::memcpy(layout.header.data(), "LASF", 4);
+      layout.scale = {{0.01, 0.01, 0.01}};
+      const std::size_t length = layout.record_length, points = 5003;
+      std::string records(points * length, '\0');
+      std::int32_t x = 1000, y = -2000, z = 300;
+      std::uint64_t times[4] = {0x41D0000000000000ull, 0x41E0000000000000ull, 0x4000000000000000ull, 0};
+      std::uint32_t series = 0;
+      for(std::size_t p = 0; p < points; ++p)
+      {
+        unsigned char* r = reinterpret_cast<unsigned char*>(&records[p * length]);
+        // runs of small steps, jumps now and then, all 32 bits at times
+        x += std::int32_t(uniform(21)) - 10 + (uniform(50) == 0 ? std::int32_t(random()) : 0);
+        y += std::int32_t(uniform(7)) - 3;
+        z = uniform(30) == 0 ? std::int32_t(random()) : z + std::int32_t(uniform(5)) - 2;
+        SN::store_little_endian<std::int32_t>(r, x);
+        SN::store_little_endian<std::int32_t>(r + 4, y);
+        SN::store_little_endian<std::int32_t>(r + 8, z);
+        SN::store_little_endian<std::uint16_t>(r + 12, std::uint16_t(uniform(4) == 0 ? random() : 200 + uniform(3)));
+        const unsigned n = 1 + uniform(format >= 6 ? 15 : 7), ret = 1 + uniform(n);
+        // GPS time: steps in one of four interleaved series, the same time again, far jumps
+        const std::uint32_t event = uniform(100);
+        if(event < 3)
+          series = uniform(4);
+        if(event == 5)
+          times[series] = (std::uint64_t(random()) << 32) | random();
+        else if(event > 20)
+          times[series] += 1000 + uniform(event > 90 ? 100000 : 3);
+        const std::size_t time_at = format >= 6 ? 22 : 20;
+        if(format >= 6)
+        {
+          r[14] = std::uint8_t(ret | (n << 4));
+          const unsigned channel = uniform(10) == 0 ? uniform(4) : (p / 500) % 4;
+          const unsigned flags = uniform(20) == 0 ? unsigned(random()) & ~0x30u : uniform(10) == 0 ? 0x40u : 0u;
+          r[15] = std::uint8_t(flags | (channel << 4));
+          r[16] = std::uint8_t(uniform(5) == 0 ? uniform(256) : 2);
+          r[17] = std::uint8_t(uniform(3) == 0 ? uniform(256) : 7);
+          SN::store_little_endian<std::int16_t>(r + 18, std::int16_t(uniform(8) == 0 ? random() : -300));
+          SN::store_little_endian<std::uint16_t>(r + 20, std::uint16_t(p / 1000));
+        }
+        else
+        {
+          r[14] = std::uint8_t(ret | (n << 3) | (uniform(2) << 6) | (uniform(40) == 0 ? 0x80 : 0));
+          r[15] = std::uint8_t(uniform(5) == 0 ? uniform(256) : 2);
+          r[16] = std::uint8_t(std::int8_t(uniform(4) == 0 ? int(uniform(181)) - 90 : 10));
+          r[17] = std::uint8_t(uniform(3) == 0 ? uniform(256) : 7);
+          SN::store_little_endian<std::uint16_t>(r + 18, std::uint16_t(p / 1000));
+        }
+        if(format == 1 || format == 3 || format >= 6)
+          SN::store_little_endian<std::uint64_t>(r + time_at, times[series]);
+        const std::size_t colour_at = format == 2 ? 20 : format == 3 ? 28 : format >= 7 ? 30 : 0;
+        if(colour_at != 0)
+        {
+          const bool grey = uniform(3) == 0;
+          const std::uint16_t red = std::uint16_t(uniform(6) == 0 ? random() : 256 * 40 + uniform(4));
+          for(std::size_t c = 0; c < (format == 8 ? 4u : 3u); ++c)
+            SN::store_little_endian<std::uint16_t>(r + colour_at + 2 * c,
+                                                   grey && c < 3 ? red : std::uint16_t(red + uniform(600)));
+        }
+        for(std::size_t e = 0; e < extra; ++e)
+          r[length - extra + e] = std::uint8_t(e == 0 ? p : uniform(4) == 0 ? uniform(256) : 9);
+      }
+      const std::string one = write_laz("made_up.laz", layout, records, 1, 1000, 777);
+      CHECK(decoded_records(one, 1) == records);
+      CHECK(decoded_records(one, 3) == records);
+      CHECK(SN::internal::read_las_header(one).point_count == points);
+      // 6 chunks, the last of 3 records; another block size and thread count: the same bytes
+      CHECK(file_bytes(write_laz("made_up_3.laz", layout, records, 3, 1000, 1)) == file_bytes(one));
+      // a last chunk of one record
+      CHECK(decoded_records(write_laz("made_up_one.laz", layout, records, 2, 1001), 2) == records);
+    }
+}
+
+TEST_CASE("LAZ out: wave packets, empty and one-point files", "[laz][io][laz-out]")
+{
+  for(unsigned int format : {4u, 5u, 9u, 10u})
+  {
+    SN::Las_output_layout layout;
+    layout.point_format = format;
+    layout.record_length = SN::internal::LAS_POINT_RECORD_BYTES[format];
+    std::ostringstream out;
+    CHECK_THROWS_WITH(SN::Laz_writer<>(out, layout), Catch::Contains("wave packets"));
+  }
+  SN::Las_output_layout layout = SN::las_output_layout_for({{0., 0., 0.}}, {{1., 1., 1.}}, {});
+  layout.record_length = layout.copied_record_length;
+  const std::string empty = write_laz("empty.laz", layout, "", 2);
+  CHECK(SN::internal::read_las_header(empty).point_count == 0);
+  CHECK(decoded_records(empty, 2).empty());
+  std::string one(layout.record_length, '\7');
+  CHECK(decoded_records(write_laz("one.laz", layout, one, 2), 1) == one);
 }
