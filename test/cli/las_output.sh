@@ -8,13 +8,15 @@
 # the six IGN tiles and on the LAS and LAZ files of ../shared/data/laz (LAS 1.2 to 1.4, extra bytes,
 # EVLRs); a LAZ input gives the LAS twin's output byte for byte; an output read again by the tool
 # gives the input's results; a point set of another format gets format 6 records within half a
-# scale unit. The refusals exit 2 with one line and write nothing.
-# usage: las_output.sh TOOL SHARED_DATA_FOLDER PYTHON CHECKER
+# scale unit. LAZ output (-o OUT.laz), decompressed by the las_copy example: the LAS output byte for
+# byte, in fewer bytes. The refusals exit 2 with one line and write nothing.
+# usage: las_output.sh TOOL SHARED_DATA_FOLDER PYTHON CHECKER LAS_COPY
 set -eu
 tool=$1
 data=$2
 python=$3
 checker=$4
+las_copy=$5
 dir=las-output-test
 rm -rf "$dir" && mkdir -p "$dir"
 . "$(dirname "$0")/refusals.sh"
@@ -29,6 +31,13 @@ for name in simple 1_4_w_evlr extrabytes; do
     || fail "optimal $name: the LAS output"
   grep -q "^normal_x,normal_y,normal_z,a,b,k,error,linearity,planarity,scattering,label,error_equal,k_equal$" \
     "$dir/names.txt" || fail "optimal $name: the added dimensions: $(cat "$dir/names.txt")"
+done
+# optimal to LAZ (point-wise: LAS 1.2 format 3; layered with EVLRs): the LAS output once decompressed
+for name in simple 1_4_w_evlr; do
+  "$tool" optimal "$data/laz/$name.laz" -o "$dir/$name.laz" $search 2> /dev/null || fail "optimal $name (LAZ)"
+  "$tool" optimal "$data/laz/$name.laz" -o "$dir/$name.from_laz.las" $search 2> /dev/null || fail "optimal $name (LAS)"
+  "$las_copy" "$dir/$name.laz" "$dir/$name.unzipped.las" > /dev/null || fail "optimal $name: LAZ unread"
+  cmp "$dir/$name.from_laz.las" "$dir/$name.unzipped.las" || fail "optimal $name: the LAZ output is not the LAS output"
 done
 # every LAZ file under 1 MB (point-wise and layered, extra bytes, EVLRs, COPC): the output read again
 # gives the input's results, byte for byte
@@ -57,9 +66,22 @@ for tile in $tiles; do
     > "$dir/original.txt"
   [ "$(sort -u "$dir/original.txt" | tr '\n' ' ')" != "0 " ] || fail "predict $tile: no original class kept"
 done
+# the same compressed: decompressed, the LAS output byte for byte, in fewer bytes
+for tile in 77050_627755 77060_627760; do
+  "$tool" classify predict "$dir/model.bin" "$data/labeled/ign_lidarhd_$tile.las" -o "$dir/p_$tile.laz" $codes \
+    2> /dev/null || fail "predict $tile (LAZ)"
+  "$las_copy" "$dir/p_$tile.laz" "$dir/p_$tile.unzipped.las" --threads 2 > /dev/null || fail "$tile: LAZ unread"
+  cmp "$dir/p_$tile.las" "$dir/p_$tile.unzipped.las" || fail "predict $tile: the LAZ output is not the LAS output"
+  [ "$(wc -c < "$dir/p_$tile.laz")" -lt "$(($(wc -c < "$dir/p_$tile.las") / 4))" ] || fail "predict $tile: LAZ not smaller"
+done
 twin="$data/laz/test_data_77050_627760_LA93_IGN69.laz"
 "$tool" classify predict "$dir/model.bin" "$twin" -o "$dir/p_laz.las" $codes 2> /dev/null || fail "predict on LAZ"
 cmp "$dir/p_laz.las" "$dir/p_77050_627760.las" || fail "predict: a LAZ input and its LAS twin give different outputs"
+"$tool" classify predict "$dir/model.bin" "$twin" -o "$dir/p_laz.laz" $codes --threads 3 2> /dev/null \
+  || fail "predict LAZ to LAZ"
+cmp "$dir/p_laz.laz" "$dir/p_77060_627760.laz" > /dev/null 2>&1 && fail "two tiles, one LAZ output"
+"$las_copy" "$dir/p_laz.laz" "$dir/p_laz.unzipped.las" > /dev/null || fail "LAZ to LAZ: unread"
+cmp "$dir/p_laz.unzipped.las" "$dir/p_77050_627760.las" || fail "predict: LAZ to LAZ is not LAS to LAS"
 # a legacy point format (classes 0 to 31): the model's codes fit
 "$tool" classify predict "$dir/model.bin" "$data/laz/simple.las" -o "$dir/p_simple.las" $codes 2> /dev/null \
   || fail "predict on a LAS 1.2 file"
@@ -72,6 +94,9 @@ cmp "$dir/p_laz.las" "$dir/p_77050_627760.las" || fail "predict: a LAZ input and
 "$tool" denoise "$data/laz/simple.las" -o "$dir/d.las" --iterations 3 2> /dev/null || fail "denoise (LAS)"
 "$python" "$checker" "$dir/d.las" "$data/laz/simple.las" --changed xyz > "$dir/names.txt" || fail "denoise: the LAS output"
 grep -q "^normal_x,normal_y,normal_z$" "$dir/names.txt" || fail "denoise: $(cat "$dir/names.txt")"
+"$tool" denoise "$data/laz/simple.las" -o "$dir/d.laz" --iterations 3 2> /dev/null || fail "denoise (LAZ)"
+"$las_copy" "$dir/d.laz" "$dir/d.unzipped.las" > /dev/null || fail "denoise: LAZ unread"
+cmp "$dir/d.las" "$dir/d.unzipped.las" || fail "denoise: the LAZ output is not the LAS output"
 "$python" -c "
 import numpy as np, struct
 data = open('$dir/d.las', 'rb').read()
@@ -94,6 +119,12 @@ np.savetxt('$dir/sphere.xyz', points, fmt='%.17g')"
 "$tool" optimal "$dir/sphere.xyz" -o "$dir/sphere.csv" $search 2> /dev/null || fail "optimal sphere (CSV)"
 "$tool" optimal "$dir/sphere.xyz" -o "$dir/sphere.las" $search 2> /dev/null || fail "optimal sphere (LAS)"
 "$tool" optimal "$dir/sphere.las" -o "$dir/sphere.again.csv" $search 2> /dev/null || fail "sphere: output unread"
+"$tool" optimal "$dir/sphere.xyz" -o "$dir/sphere.laz" $search 2> /dev/null || fail "optimal sphere (LAZ)"
+"$las_copy" "$dir/sphere.laz" "$dir/sphere.unzipped.las" > /dev/null || fail "sphere: LAZ unread"
+# the copy says MODIFICATION where the original says OTHER (bytes 27-58, the system identifier)
+tail -c +59 "$dir/sphere.las" > "$dir/sphere.las.tail"
+tail -c +59 "$dir/sphere.unzipped.las" > "$dir/sphere.unzipped.las.tail"
+cmp "$dir/sphere.las.tail" "$dir/sphere.unzipped.las.tail" || fail "sphere: the LAZ output is not the LAS output"
 "$python" -c "
 import numpy as np, struct, sys
 a = np.genfromtxt('$dir/sphere.csv', delimiter=',', names=True)
@@ -106,7 +137,7 @@ assert len(a) == len(b) and all(np.abs(a[c] - b[c]).max() <= 0.5e-8 * 1.0001 for
 " || fail "a point set's LAS output"
 
 # refusals
-expect_refusal "LAZ output is not written yet" "$tool" optimal "$data/laz/simple.las" -o "$dir/x.laz" $search
+expect_refusal "LAS output of a catalog" "$tool" optimal --catalog "$data/laz" -o "$dir/x.laz" $search
 expect_refusal "of 31 at most" "$tool" classify predict "$dir/model.bin" "$data/laz/simple.las" -o "$dir/x.las" \
   --class-codes ground=40
 expect_refusal "is not NAME=CODE" "$tool" classify predict "$dir/model.bin" "$data/laz/simple.las" -o "$dir/x.las" \

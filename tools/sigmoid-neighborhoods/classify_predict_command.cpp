@@ -120,10 +120,10 @@ int run_classify_predict(int argc, char** argv)
     throw Usage_error("classify predict needs MODEL INPUT, or MODEL --catalog SOURCE");
   const std::string output = args.output();
   if(output.empty())
-    throw Usage_error("classify predict needs -o OUT.ply or -o OUT.las");
-  const bool las_output = is_las_output(output); // a .laz output refused before any work
+    throw Usage_error("classify predict needs -o OUT.ply, -o OUT.las or -o OUT.laz");
+  const bool las_output = is_las_output(output);
   if(args.has("--class-codes") && !las_output)
-    throw Usage_error("--class-codes goes with -o OUT.las: a PLY output holds the class indices");
+    throw Usage_error("--class-codes goes with -o OUT.las or OUT.laz: a PLY output holds the class indices");
   refuse_las_output_of_catalog(args, "classify predict");
   const std::string& model_path = args.positional()[0];
   std::string forest_bytes;

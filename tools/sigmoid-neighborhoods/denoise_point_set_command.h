@@ -44,7 +44,7 @@ inline const char* DENOISE_POINT_SET_USAGE =
   "          also .off, .obj or .stl, and .ply is then the mesh: vertices moved, faces kept (the input\n"
   "          normals are then the mesh's vertex normals, whatever --normals says); .las: LAS 1.4, a LAS/LAZ\n"
   "          input's records with their coordinates moved (rounded to its scale) and the normals as extra\n"
-  "          bytes normal_x/y/z (format 6 records for other inputs)\n"
+  "          bytes normal_x/y/z (format 6 records for other inputs); .laz: the same compressed\n"
   "  --iterations: at most this many (default 50); they stop when the points have moved by the noise\n"
   "                level estimated from the input (--no-stop: all of them)\n"
   "  --step: the step alpha towards each rule's target; --max-deviation: a move farther than E from the\n"
@@ -164,13 +164,13 @@ inline int run_denoise_point_set(int argc, char** argv)
     return EXIT_OK;
   }
   const auto input_and_output =
-    one_input_and_output(args, "denoise", "OUTPUT (.xyz, .pwn, .ply, .las, or for a mesh .off, .obj, .stl)");
+    one_input_and_output(args, "denoise", "OUTPUT (.xyz, .pwn, .ply, .las, .laz, or for a mesh .off, .obj, .stl)");
   const std::string& input = input_and_output.first;
   const std::string& output = input_and_output.second;
   const std::string ext = SN::lower_case_extension(output);
   if(ext != "xyz" && ext != "pwn" && ext != "ply" && !is_las_output(output) && !is_mesh_format(ext))
     throw Usage_error("unknown output format '" + (ext.empty() ? std::string("(no extension)") : "." + ext) +
-                      "': expected .xyz, .pwn, .ply, .las, .off, .obj or .stl");
+                      "': expected .xyz, .pwn, .ply, .las, .laz, .off, .obj or .stl");
   const Filter_options options = read_filter_options(args);
   check_denoising_arguments(args);
   const SN::Normal_options normal_options = read_normal_options(args);
@@ -184,7 +184,7 @@ inline int run_denoise_point_set(int argc, char** argv)
   times.end_reading(model);
   if(is_mesh_format(ext) && !model.is_mesh)
     throw Usage_error(input + ": a point set cannot be written as a mesh (." + ext + "): use .xyz, .pwn or .ply");
-  if(model.is_mesh && ext != "xyz" && ext != "pwn" && ext != "las")
+  if(model.is_mesh && ext != "xyz" && ext != "pwn" && !is_las_output(output))
   {
     // A mesh written as a mesh: its vertices move, its faces stay.
     Denoise_tool_mesh mesh;
@@ -244,7 +244,7 @@ inline int run_denoise_point_set(int argc, char** argv)
     description = model_description(model);
     SN::Oriented_point_set denoised = model;
     denoised.points = points;
-    if(ext == "las")
+    if(is_las_output(output))
       write_denoised_las(output, input, denoised, normals, options.threads);
     else if(ext == "ply")
       write_file_atomically(output, [&](std::ofstream& out) { write_filtered_ply(out, denoised, normals); }, true);

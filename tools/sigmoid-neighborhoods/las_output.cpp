@@ -9,6 +9,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Las_writer.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/Laz_writer.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/las_output_layout_like.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_las_records.h>
@@ -31,11 +32,7 @@ namespace SN = CGAL::Sigmoid_neighborhoods;
 bool is_las_output(const std::string& path)
 {
   const std::string ext = SN::lower_case_extension(path);
-  if(ext == "laz")
-    throw Usage_error(path + ": LAZ output is not written yet: name a .las file (LAS 1.4, the input's records "
-                             "with the results as extra bytes dimensions) and compress it with 'laszip' or "
-                             "'pdal translate'");
-  return ext == "las";
+  return ext == "las" || ext == "laz";
 }
 
 void refuse_las_output_of_catalog(const Arguments& args, const std::string& command)
@@ -49,7 +46,8 @@ namespace {
 
 // One record per point, point format 6: the coordinates at the layout's scale, return 1 of 1, the
 // point's label as its classification when it fits (0 to 255), the rest zero.
-void write_new_records(SN::Las_writer& writer, const SN::Oriented_point_set& model, const Las_results& results)
+template <typename Writer>
+void write_new_records(Writer& writer, const SN::Oriented_point_set& model, const Las_results& results)
 {
   const SN::Las_output_layout& l = writer.layout();
   constexpr std::size_t BLOCK = 65536;
@@ -73,7 +71,8 @@ void write_new_records(SN::Las_writer& writer, const SN::Oriented_point_set& mod
 }
 
 // The records of the LAS or LAZ file `source`, each completed with its point's values.
-void write_copied_records(SN::Las_writer& writer, const std::string& source, const SN::Oriented_point_set& model,
+template <typename Writer>
+void write_copied_records(Writer& writer, const std::string& source, const SN::Oriented_point_set& model,
                           const Las_results& results, unsigned int threads)
 {
   const SN::Las_output_layout& l = writer.layout();
@@ -111,14 +110,29 @@ void write_las_results(const std::string& path, const std::string& source, const
   errno = 0;
   try
   {
+    const bool compressed = SN::lower_case_extension(path) == "laz";
+    // The records, copied or new, go to a LAS or a LAZ writer alike.
+    auto write = [&](std::ofstream& out, SN::Las_output_layout layout, const auto& write_records) {
+      if(compressed)
+      {
+        SN::Laz_writer<> writer(out, std::move(layout), threads);
+        write_records(writer);
+        writer.close();
+      }
+      else
+      {
+        SN::Las_writer writer(out, std::move(layout));
+        write_records(writer);
+        writer.close();
+      }
+    };
     write_file_atomically(
       path,
       [&](std::ofstream& out) {
         if(ext == "las" || ext == "laz")
         {
-          SN::Las_writer writer(out, SN::las_output_layout_like(source, results.dimensions));
-          write_copied_records(writer, source, model, results, threads);
-          writer.close();
+          write(out, SN::las_output_layout_like(source, results.dimensions),
+                [&](auto& writer) { write_copied_records(writer, source, model, results, threads); });
           return;
         }
         std::array<double, 3> min{{0., 0., 0.}}, max{{0., 0., 0.}};
@@ -128,9 +142,8 @@ void write_las_results(const std::string& path, const std::string& source, const
           min = {{box.xmin(), box.ymin(), box.zmin()}};
           max = {{box.xmax(), box.ymax(), box.zmax()}};
         }
-        SN::Las_writer writer(out, SN::las_output_layout_for(min, max, results.dimensions));
-        write_new_records(writer, model, results);
-        writer.close();
+        write(out, SN::las_output_layout_for(min, max, results.dimensions),
+              [&](auto& writer) { write_new_records(writer, model, results); });
       },
       true);
   }
@@ -148,6 +161,10 @@ void write_las_results(const std::string& path, const std::string& source, const
     throw Usage_error("cannot write " + path + ": " + e.what());
   }
   catch(const std::length_error& e)
+  {
+    throw Usage_error("cannot write " + path + ": " + e.what());
+  }
+  catch(const std::invalid_argument& e) // a LAZ output of records with wave packets
   {
     throw Usage_error("cannot write " + path + ": " + e.what());
   }

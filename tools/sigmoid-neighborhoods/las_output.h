@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The commands' LAS 1.4 outputs: a LAS or LAZ input's records as they are, the results added as
+// The commands' LAS 1.4 and LAZ outputs: a LAS or LAZ input's records as they are, the results added as
 // extra bytes dimensions (a record merged into an earlier one at its position gets that point's
 // results), or new records (point format 6) for the other formats.
 
@@ -20,7 +20,7 @@ namespace sigmoid_tool {
 
 class Arguments;
 
-// Whether `path` names a LAS output (.las); a .laz output is refused, naming what is written.
+// Whether `path` names a LAS output: .las, or .laz for the same compressed as LASzip does.
 bool is_las_output(const std::string& path);
 
 // Refuses a LAS output of a catalog (its tiles' records would come from several files).
@@ -38,7 +38,8 @@ struct Las_results
 };
 
 // Writes `path` atomically: the records of `source` (LAS or LAZ, decoded on `threads`) with `results`,
-// or one record per point of `model` when `source` is another format. Any failure is a Usage_error.
+// or one record per point of `model` when `source` is another format; compressed on `threads` when
+// `path` ends in .laz. Any failure is a Usage_error.
 void write_las_results(const std::string& path, const std::string& source,
                        const CGAL::Sigmoid_neighborhoods::Oriented_point_set& model, const Las_results& results,
                        unsigned int threads);

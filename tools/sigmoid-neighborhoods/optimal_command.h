@@ -33,14 +33,15 @@ namespace sigmoid_tool {
 namespace SN = CGAL::Sigmoid_neighborhoods;
 
 inline const char* OPTIMAL_USAGE =
-  "usage: sigmoid-neighborhoods optimal INPUT|--catalog SOURCE [--tile NAME] -o OUT.csv|OUT.las [--ply OUT.ply]\n"
-  "         [--color error|label|none]"
+  "usage: sigmoid-neighborhoods optimal INPUT|--catalog SOURCE [--tile NAME] -o OUT.csv|OUT.las|OUT.laz\n"
+  "         [--ply OUT.ply] [--color error|label|none]"
   " [--k-min 6] [--k-max 20] [--a-grid ANGLES] [--b-grid ANGLES] [--barycenter weighted|unweighted]\n"
   "         [--angle-tolerance 1e-6] [--criterion dimensionality|eigenentropy] [--threads N] [normals]\n"
   "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply .las .laz; normals estimated when\n"
   "      absent)\n"
   "  -o OUT.las: LAS 1.4, the input's LAS/LAZ records untouched (format 6 for other inputs) with the CSV's\n"
-  "      columns as extra bytes dimensions (normal_x/y/z, a, b, error... float; k, label, k_equal integers)\n"
+  "      columns as extra bytes dimensions (normal_x/y/z, a, b, error... float; k, label, k_equal integers);\n"
+  "      OUT.laz: the same compressed as LASzip does (point formats 0-3 and 6-8)\n"
   "  --ply: a binary PLY point cloud: the CSV's columns as properties scalar_<column> (CloudCompare's\n"
   "      scalar fields), quality = error and red green blue (MeshLab)\n"
   "  --criterion: what the search minimises, E_dim (dimensionality, the default) or the eigenentropy\n"
@@ -258,9 +259,9 @@ inline int run_optimal(int argc, char** argv)
   }
   const std::string csv = args.output();
   if(csv.empty())
-    throw Usage_error("optimal needs -o OUT.csv");
+    throw Usage_error("optimal needs -o OUT.csv, OUT.las or OUT.laz");
   const std::string ply = args.get("--ply");
-  const bool las_output = is_las_output(csv); // a .laz output refused before any work
+  const bool las_output = is_las_output(csv);
   refuse_las_output_of_catalog(args, "optimal");
   Search_options options = read_search_options(args);
   try
