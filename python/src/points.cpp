@@ -7,6 +7,7 @@
 #include "numpy_arrays.h"
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Las_writer.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/Laz_writer.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_height_features.h>
@@ -150,8 +151,9 @@ void write(const py::object& path, const py::object& points_object, const py::ob
            const py::object& number_of_returns, const py::object& gps_time)
 {
   const std::string filename = py::module_::import("os").attr("fspath")(path).cast<std::string>();
-  if(SN::lower_case_extension(filename) != "las")
-    throw py::value_error(filename + ": write() writes LAS (.las); LAZ output is not written yet");
+  const std::string extension = SN::lower_case_extension(filename);
+  if(extension != "las" && extension != "laz")
+    throw py::value_error(filename + ": write() writes LAS (.las) or LAZ (.laz)");
   const Rows_3 points(points_object, "points");
   const std::size_t n = points.size();
   const auto classification = column_of(labels, n, "labels");
@@ -189,28 +191,39 @@ void write(const py::object& path, const py::object& points_object, const py::ob
       throw py::value_error("cannot write " + filename + ": " + std::strerror(errno));
     try
     {
-      SN::Las_writer writer(out, layout);
-      const SN::Las_output_layout& l = writer.layout();
-      std::vector<unsigned char> record(l.record_length);
       // a field's value clamped to what it holds (NaN as 0): no conversion out of range
       auto at = [](const std::optional<py::array_t<double, py::array::forcecast>>& a, std::size_t i, double otherwise,
                    double largest) {
         const double v = a ? a->data()[i] : otherwise;
         return std::isnan(v) ? 0. : std::clamp(std::nearbyint(v), 0., largest);
       };
-      for(std::size_t i = 0; i < n; ++i)
+      auto write_records = [&](auto& writer) {
+        const SN::Las_output_layout& l = writer.layout();
+        std::vector<unsigned char> record(l.record_length);
+        for(std::size_t i = 0; i < n; ++i)
+        {
+          std::fill(record.begin(), record.end(), 0);
+          SN::store_las_coordinates(record.data(), l, {{points(i, 0), points(i, 1), points(i, 2)}});
+          SN::store_little_endian<std::uint16_t>(record.data() + 12, std::uint16_t(at(intensities, i, 0., 65535.)));
+          record[14] = std::uint8_t(unsigned(at(returns, i, 1., 15.)) | unsigned(at(numbers, i, 1., 15.)) << 4);
+          record[16] = std::uint8_t(at(classification, i, 0., 255.));
+          SN::store_little_endian<double>(record.data() + 22, times ? times->data()[i] : 0.);
+          for(std::size_t j = 0; j < columns.size(); ++j)
+            SN::store_las_extra(record.data(), l, j, columns[j].data()[i]);
+          writer.write(record.data(), 1);
+        }
+        writer.close();
+      };
+      if(extension == "laz")
       {
-        std::fill(record.begin(), record.end(), 0);
-        SN::store_las_coordinates(record.data(), l, {{points(i, 0), points(i, 1), points(i, 2)}});
-        SN::store_little_endian<std::uint16_t>(record.data() + 12, std::uint16_t(at(intensities, i, 0., 65535.)));
-        record[14] = std::uint8_t(unsigned(at(returns, i, 1., 15.)) | unsigned(at(numbers, i, 1., 15.)) << 4);
-        record[16] = std::uint8_t(at(classification, i, 0., 255.));
-        SN::store_little_endian<double>(record.data() + 22, times ? times->data()[i] : 0.);
-        for(std::size_t j = 0; j < columns.size(); ++j)
-          SN::store_las_extra(record.data(), l, j, columns[j].data()[i]);
-        writer.write(record.data(), 1);
+        SN::Laz_writer<> writer(out, layout);
+        write_records(writer);
       }
-      writer.close();
+      else
+      {
+        SN::Las_writer writer(out, layout);
+        write_records(writer);
+      }
       out.close();
       if(!out)
         throw std::ios_base::failure("cannot write " + filename);
@@ -353,7 +366,8 @@ ValueError
         "gps_time"_a = py::none(),
         R"doc(write(path, points, fields=None, *, labels=None, intensity=None, return_number=None, number_of_returns=None, gps_time=None)
 
-Writes the points as a LAS 1.4 file (point data format 6), which read() reads back: the coordinates
+Writes the points as a LAS 1.4 file (point data format 6), or a LAZ file (.laz: the same compressed as
+LASzip compresses it, on all cores), which read() reads back: the coordinates
 rounded to one scale for the three axes, the smallest power of ten for which the points' largest half
 extent takes at most 2^30 units (a coordinate moves by at most half a unit, below 5e-9 times the
 largest extent, and the rounding of a double); labels (0 to 255) as the classification, intensity, return numbers (default 1 of 1)
@@ -364,7 +378,7 @@ record that PDAL, LAStools, lidR and CloudCompare read. Written to a temporary f
 Parameters
 ----------
 path : str or os.PathLike
-    a .las file
+    a .las or .laz file
 points : (n, 3) array of numbers
 fields : dict of str to (n,) arrays, optional
     names of at most 32 characters

@@ -344,13 +344,14 @@ def test_read_a_laz_tile_like_its_las_twin():
         assert laz["merged_duplicates"] == las["merged_duplicates"]
 
 
-def test_write_reads_back_through_read_within_half_a_scale_unit(tmp_path):
+@pytest.mark.parametrize("extension", ["las", "laz"])
+def test_write_reads_back_through_read_within_half_a_scale_unit(tmp_path, extension):
     rng = np.random.default_rng(3)
     points = rng.uniform(-50.0, 50.0, size=(500, 3)) + [651000.0, 6860000.0, 120.0]
     labels = rng.integers(0, 20, size=500)
     intensity = rng.integers(0, 65536, size=500).astype(np.uint16)
     gps_time = 3.0e8 + np.arange(500) * 1e-5
-    path = tmp_path / "out.las"
+    path = tmp_path / ("out." + extension)
     sn.write(path, points, {"height": points[:, 2].astype(np.float32), "k": np.full(500, 17, dtype=np.uint8)},
              labels=labels, intensity=intensity, return_number=np.full(500, 2), number_of_returns=np.full(500, 3),
              gps_time=gps_time)
@@ -364,15 +365,17 @@ def test_write_reads_back_through_read_within_half_a_scale_unit(tmp_path):
     assert np.all(back["return_number"] == 2) and np.all(back["number_of_returns"] == 3)
     assert np.array_equal(back["gps_time"], gps_time)
     data = path.read_bytes()
-    assert data[104] == 6 and int.from_bytes(data[105:107], "little") == 30 + 4 + 1  # float32, uint8 added
+    format_byte = 6 | (0x80 if extension == "laz" else 0)  # LAZ: LASzip's compression bit
+    assert data[104] == format_byte and int.from_bytes(data[105:107], "little") == 30 + 4 + 1  # float32, uint8
     assert b"height" in data and b"LASF_Spec" in data
+    assert (b"laszip encoded" in data) == (extension == "laz")
     assert not list(tmp_path.glob("*.tmp"))
 
 
 def test_write_refuses_what_it_cannot_write(tmp_path):
     points = np.zeros((3, 3))
-    with pytest.raises(ValueError, match="LAZ output"):
-        sn.write(tmp_path / "out.laz", points)
+    with pytest.raises(ValueError, match="writes LAS"):
+        sn.write(tmp_path / "out.ply", points)
     with pytest.raises(ValueError, match="shape"):
         sn.write(tmp_path / "out.las", points, {"a": np.zeros(2)})
     with pytest.raises(ValueError, match="32 characters"):
