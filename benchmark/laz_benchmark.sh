@@ -3,7 +3,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 #
 # LAZ input against its uncompressed twin and an independent decoder:
-# 1. decoding speed on one and two threads (laz_decode_benchmark: the records alone, then the whole
+# 1. decoding speed on one and two threads (laz_codec_benchmark: the records alone, then the whole
 #    read into points) on the IGN tiles, autzen_trim.laz and a file of 14 chunks, beside the LAS twins;
 # 2. npm's laz-perf (installed here, in a scratch folder, never a dependency) on the same files;
 # 3. what reading LAZ adds to a command: `optimal` and `classify predict` on an IGN tile and its twin;
@@ -13,7 +13,7 @@ set -eu
 build=${1:-build}
 data=${2:-../shared/data}
 tool=$build/tools/sigmoid-neighborhoods/sigmoid-neighborhoods
-bench=$build/benchmark/laz_decode_benchmark
+bench=$build/benchmark/laz_codec_benchmark
 [ -x "$bench" ] && [ -x "$tool" ] || { echo "build $build first (make build)" >&2; exit 1; }
 [ -d "$data/laz" ] || { echo "$data/laz not found" >&2; exit 1; }
 data=$(cd "$data" && pwd) # node runs in the scratch folder

@@ -105,7 +105,7 @@ public:
       counts[s] = 1;
     m_total = 0;
     m_cycle = m_symbols;
-    update();
+    update(true);
     m_until_update = m_cycle = (m_symbols + 6) >> 1;
   }
 
@@ -113,9 +113,10 @@ private:
   friend class Arithmetic_decoder;
   friend class Arithmetic_encoder;
 
-  // Rebuilds the cumulative distribution (and the table) from the counts, then sets how many symbols
-  // pass before the next rebuild: a little more each time, up to a ceiling.
-  void update()
+  // Rebuilds the cumulative distribution from the counts, then sets how many symbols pass before the
+  // next rebuild: a little more each time, up to a ceiling. Only a decoder searches the table: it is
+  // rebuilt with the distribution when `with_table`, else marked stale and rebuilt at the next decode.
+  void update(bool with_table)
   {
     std::uint32_t* cumulative = m_storage.data();
     std::uint32_t* counts = cumulative + m_symbols;
@@ -127,31 +128,14 @@ private:
     }
     const std::uint32_t scale = 0x80000000u / m_total;
     std::uint32_t sum = 0;
-    if(m_table_size == 0)
+    for(std::uint32_t s = 0; s < m_symbols; ++s)
     {
-      for(std::uint32_t s = 0; s < m_symbols; ++s)
-      {
-        cumulative[s] = (scale * sum) >> (31 - coder::SYMBOL_LENGTH_SHIFT);
-        sum += counts[s];
-      }
+      cumulative[s] = (scale * sum) >> (31 - coder::SYMBOL_LENGTH_SHIFT);
+      sum += counts[s];
     }
-    else
-    {
-      // table[i]: the last symbol whose cumulative count lies below i << shift (the search starts there).
-      std::uint32_t* table = counts + m_symbols;
-      std::uint32_t filled = 0;
-      for(std::uint32_t s = 0; s < m_symbols; ++s)
-      {
-        cumulative[s] = (scale * sum) >> (31 - coder::SYMBOL_LENGTH_SHIFT);
-        sum += counts[s];
-        const std::uint32_t slot = cumulative[s] >> m_table_shift;
-        while(filled < slot)
-          table[++filled] = s - 1; // s >= 1 here: the first cumulative count is 0
-      }
-      table[0] = 0;
-      while(filled <= m_table_size)
-        table[++filled] = m_symbols - 1;
-    }
+    m_table_stale = m_table_size != 0;
+    if(with_table)
+      rebuild_table();
     m_cycle = (5 * m_cycle) >> 2;
     const std::uint32_t most = (m_symbols + 6) << 3;
     if(m_cycle > most)
@@ -159,10 +143,31 @@ private:
     m_until_update = m_cycle;
   }
 
+  // table[i]: the last symbol whose cumulative count lies below i << shift (a decoder's search starts there).
+  void rebuild_table()
+  {
+    if(!m_table_stale)
+      return;
+    const std::uint32_t* cumulative = m_storage.data();
+    std::uint32_t* table = m_storage.data() + 2 * std::size_t(m_symbols);
+    std::uint32_t filled = 0;
+    for(std::uint32_t s = 1; s < m_symbols; ++s) // the first cumulative count is 0
+    {
+      const std::uint32_t slot = cumulative[s] >> m_table_shift;
+      while(filled < slot)
+        table[++filled] = s - 1;
+    }
+    table[0] = 0;
+    while(filled <= m_table_size)
+      table[++filled] = m_symbols - 1;
+    m_table_stale = false;
+  }
+
   std::vector<std::uint32_t> m_storage;
   std::uint32_t m_symbols;
   std::uint32_t m_total = 0, m_cycle = 0, m_until_update = 0;
   std::uint32_t m_table_size, m_table_shift;
+  bool m_table_stale = false;
 };
 
 // Decodes LASzip's arithmetic-coded bytes [begin, end). The decoder keeps `value`, the code's offset
@@ -217,6 +222,8 @@ public:
     std::uint32_t symbol, low, high = m_length;
     if(m.m_table_size != 0)
     {
+      if(m.m_table_stale) // last updated by an encoder
+        m.rebuild_table();
       m_length >>= coder::SYMBOL_LENGTH_SHIFT;
       const std::uint32_t scaled = m_value / m_length;
       std::uint32_t slot = scaled >> m.m_table_shift;
@@ -267,7 +274,7 @@ public:
       renormalize();
     ++m.m_storage[m.m_symbols + symbol];
     if(--m.m_until_update == 0)
-      m.update();
+      m.update(true);
     return symbol;
   }
 
@@ -393,7 +400,7 @@ public:
       renormalize();
     ++m.m_storage[m.m_symbols + symbol];
     if(--m.m_until_update == 0)
-      m.update();
+      m.update(false);
   }
 
   // `bits` (1 to 32) equiprobable bits of `value`, as read_bits() reads them.

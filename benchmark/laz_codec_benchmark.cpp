@@ -7,6 +7,8 @@
 // points and fields, duplicates merged, no normals), which is what a command pays.
 // usage: laz_decode_benchmark [--threads 1,2] [--runs 5 (0: one run, no warm-up)] FILE...
 
+#include <CGAL/Sigmoid_neighborhoods/IO/Laz_writer.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/las_output_layout_like.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_las_records.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 
@@ -62,6 +64,16 @@ std::size_t decode_records(const std::string& path, unsigned int threads)
   return checksum;
 }
 
+// The bytes of the LAZ file that holds `records` laid out by `layout`, compressed on `threads`.
+std::size_t encode_records(const SN::Las_output_layout& layout, const std::string& records, unsigned int threads)
+{
+  std::stringstream out;
+  SN::Laz_writer<> writer(out, layout, threads);
+  writer.write(reinterpret_cast<const unsigned char*>(records.data()), records.size() / layout.record_length);
+  writer.close();
+  return std::size_t(out.tellp());
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -89,12 +101,18 @@ int main(int argc, char** argv)
     std::cerr << "usage: laz_decode_benchmark [--threads 1,2] [--runs 5] FILE...\n";
     return 2;
   }
-  std::printf("%-52s %9s %7s %12s %12s %14s\n", "file", "points", "threads", "decode_s", "Mpoints/s", "read_points_s");
+  std::printf("%-52s %9s %7s %10s %10s %13s %10s %10s %11s\n", "file", "points", "threads", "decode_s", "Mpoints/s",
+              "read_points_s", "encode_s", "Mpoints/s", "laz_bytes");
   for(const std::string& path : files)
   {
     try
     {
       const SN::Las_header h = SN::read_las_header(path);
+      std::string records;
+      SN::read_las_records(path, [&](std::size_t, const unsigned char* r, std::size_t count) {
+        records.append(reinterpret_cast<const char*>(r), count * h.record_length);
+      });
+      const SN::Las_output_layout layout = SN::las_output_layout_like(path, {});
       for(unsigned int t : thread_counts)
       {
         const double decode = median_seconds(runs, [&] { decode_records(path, t); });
@@ -102,9 +120,12 @@ int main(int argc, char** argv)
         options.neighbors = 0;
         options.threads = t;
         const double read = median_seconds(runs, [&] { SN::read_oriented_point_set(path, options); });
-        std::printf("%-52s %9llu %7u %12.4f %12.2f %14.4f\n", std::filesystem::path(path).filename().c_str(),
-                    static_cast<unsigned long long>(h.point_count), t, decode, double(h.point_count) / decode / 1e6,
-                    read);
+        std::size_t bytes = 0;
+        const double encode = median_seconds(runs, [&] { bytes = encode_records(layout, records, t); });
+        std::printf("%-52s %9llu %7u %10.4f %10.2f %13.4f %10.4f %10.2f %11zu\n",
+                    std::filesystem::path(path).filename().c_str(), static_cast<unsigned long long>(h.point_count), t,
+                    decode, double(h.point_count) / decode / 1e6, read, encode,
+                    double(h.point_count) / encode / 1e6, bytes);
       }
     }
     catch(const std::exception& e)
