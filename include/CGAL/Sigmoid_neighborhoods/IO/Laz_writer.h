@@ -112,30 +112,37 @@ public:
   }
 
 private:
-  // Compresses the first `count` pending records, in chunks, `m_batch` chunks at a time, and writes them.
+  // Compresses the first `count` pending records, in chunks, `m_batch` chunks at a time, each chunk in
+  // its coder's tasks (layered chunks: POINT14, the colours, groups of extra bytes), all of a batch's
+  // tasks in parallel; then writes them.
   void compress(std::size_t count)
   {
     const std::size_t length = m_layout.record_length;
     const std::size_t chunks = (count + m_chunk_size - 1) / m_chunk_size;
+    internal::laz::Chunk_coder& shape = m_single ? *m_single : m_single.emplace(m_compressor, m_items);
+    const std::size_t tasks = shape.encode_task_count();
     for(std::size_t first = 0; first < chunks; first += m_batch)
     {
       const std::size_t n = (std::min)(m_batch, chunks - first);
-      m_coded.resize((std::max)(m_coded.size(), n));
-      const auto encode = [&](std::size_t i, internal::laz::Chunk_coder& coder) {
-        const std::size_t from = (first + i) * m_chunk_size;
-        const std::size_t records = (std::min)(std::size_t(m_chunk_size), count - from);
-        m_coded[i].clear();
-        coder.encode(m_pending.data() + from * length, records, m_coded[i]);
+      m_layers.resize((std::max)(m_layers.size(), n));
+      for(std::size_t i = 0; i < n; ++i)
+        m_layers[i].resize(shape.encode_layer_count());
+      auto records_of = [&](std::size_t i) { return (std::min)(std::size_t(m_chunk_size), count - (first + i) * m_chunk_size); };
+      const auto encode = [&](std::size_t task, internal::laz::Chunk_coder& coder) {
+        const std::size_t i = task / tasks;
+        coder.encode_task(task % tasks, m_pending.data() + (first + i) * m_chunk_size * length, records_of(i), m_layers[i]);
       };
-      if(n == 1)
-        encode(0, m_single ? *m_single : m_single.emplace(m_compressor, m_items));
+      if(n * tasks == 1)
+        encode(0, shape);
       else
         internal::for_each_index<ConcurrencyTag>(
-          n, m_threads, [&] { return internal::laz::Chunk_coder(m_compressor, m_items); }, encode, 1);
+          n * tasks, m_threads, [&] { return internal::laz::Chunk_coder(m_compressor, m_items); }, encode, 1);
       for(std::size_t i = 0; i < n; ++i)
       {
-        m_out.write(reinterpret_cast<const char*>(m_coded[i].data()), std::streamsize(m_coded[i].size()));
-        m_chunk_bytes.push_back(m_coded[i].size());
+        m_chunk.clear();
+        shape.assemble(m_pending.data() + (first + i) * m_chunk_size * length, records_of(i), m_layers[i], m_chunk);
+        m_out.write(reinterpret_cast<const char*>(m_chunk.data()), std::streamsize(m_chunk.size()));
+        m_chunk_bytes.push_back(m_chunk.size());
       }
       check("the compressed point records");
     }
@@ -163,8 +170,9 @@ private:
   internal::laz::Compressor m_compressor = internal::laz::POINTWISE_CHUNKED;
   Las_point_summary m_summary;
   std::vector<unsigned char> m_pending;           // records not compressed yet
-  std::vector<std::vector<unsigned char>> m_coded; // a batch's compressed chunks
-  std::optional<internal::laz::Chunk_coder> m_single;
+  std::vector<std::vector<std::vector<unsigned char>>> m_layers; // a batch's chunks' layers
+  std::vector<unsigned char> m_chunk; // one chunk assembled
+  std::optional<internal::laz::Chunk_coder> m_single; // the tasks' shape, and the coder of a lone task
   std::vector<std::uint64_t> m_chunk_bytes;
 };
 

@@ -92,7 +92,16 @@ public:
           m_layer_names.push_back("RGBNIR14 NIR");
       }
       if(i != 0)
+      {
+        if(item.type == BYTE14)
+          for(std::size_t b = 0; b < item.size; b += BYTES_PER_TASK)
+            m_tasks.push_back({m_parts.size(), b, (std::min)(std::size_t(item.size), b + BYTES_PER_TASK)});
+        else
+          m_tasks.push_back({m_parts.size(), 0, 0});
         m_parts.push_back(part);
+      }
+      else
+        m_tasks.push_back({NO_PART, 0, 0});
       m_record_length += item.size;
     }
     m_layers.resize(m_layer_names.size());
@@ -162,53 +171,76 @@ public:
   // Appends to `out` the chunk of the `count` (>= 1) records at `records`: what decode() reads back.
   void encode(const unsigned char* records, std::size_t count, std::vector<unsigned char>& out)
   {
-    CGAL_precondition(count >= 1 && count <= 0xFFFFFFFFu);
+    m_encoded.resize(m_layers.size());
+    for(std::size_t t = 0; t < encode_task_count(); ++t)
+      encode_task(t, records, count, m_encoded);
+    assemble(records, count, m_encoded, out);
+  }
+
+  // Encoding splits into tasks that share nothing, to run in parallel: POINT14's nine layers, each
+  // colour item, and the extra bytes by groups of layers (an item after POINT14 follows the scanner
+  // channel of each record, which the record holds).
+  std::size_t encode_task_count() const { return m_tasks.size(); }
+
+  // Encodes task `t` of the chunk of `count` (>= 1) records: its layers' bytes to `layers` (one per
+  // layer of the chunk, empty for a layer that codes no change).
+  void encode_task(std::size_t t, const unsigned char* records, std::size_t count,
+                   std::vector<std::vector<unsigned char>>& layers)
+  {
+    CGAL_precondition(count >= 1 && layers.size() == m_layers.size());
+    const Task& task = m_tasks[t];
+    if(task.part == NO_PART)
+    {
+      m_point->start_encoding(records);
+      for(std::size_t i = 1; i < count; ++i)
+        m_point->encode(records + i * m_record_length);
+      m_point->finish_encoding(layers.data());
+      return;
+    }
+    const Part& p = m_parts[task.part];
+    const unsigned char* record = records;
+    auto channel = [](const unsigned char* r) { return (unsigned(r[15]) >> 4) & 3u; };
+    if(p.type == BYTE14)
+    {
+      Byte14_coder& bytes = m_bytes[p.index];
+      bytes.start_encoding(record + p.offset, channel(record), task.begin, task.end);
+      for(std::size_t i = 1; i < count; ++i)
+      {
+        record += m_record_length;
+        bytes.encode(record + p.offset, channel(record));
+      }
+      bytes.finish_encoding(layers.data() + p.first_layer + task.begin);
+      return;
+    }
+    Rgb14_coder& colors = m_colors[p.index];
+    colors.start_encoding(record + p.offset, channel(record));
+    for(std::size_t i = 1; i < count; ++i)
+    {
+      record += m_record_length;
+      colors.encode(record + p.offset, channel(record));
+    }
+    colors.finish_encoding(layers.data() + p.first_layer);
+  }
+
+  // Appends the chunk whose tasks gave `layers`: its first record, its count, the layers' sizes, their bytes.
+  void assemble(const unsigned char* records, std::size_t count, const std::vector<std::vector<unsigned char>>& layers,
+                std::vector<unsigned char>& out) const
+  {
+    CGAL_precondition(count >= 1 && count <= 0xFFFFFFFFu && layers.size() == m_layers.size());
     out.insert(out.end(), records, records + m_record_length);
     unsigned char number[4];
     store_little_endian<std::uint32_t>(number, std::uint32_t(count));
     out.insert(out.end(), number, number + 4);
-
-    const unsigned first_channel = m_point->start_encoding(records);
-    for(const Part& p : m_parts)
+    for(const std::vector<unsigned char>& layer : layers)
     {
-      if(p.type == BYTE14)
-        m_bytes[p.index].start_encoding(records + p.offset, first_channel);
-      else
-        m_colors[p.index].start_encoding(records + p.offset, first_channel);
-    }
-    const unsigned char* record = records;
-    for(std::size_t i = 1; i < count; ++i)
-    {
-      record += m_record_length;
-      const unsigned channel = m_point->encode(record);
-      for(const Part& p : m_parts)
-      {
-        if(p.type == BYTE14)
-          m_bytes[p.index].encode(record + p.offset, channel);
-        else
-          m_colors[p.index].encode(record + p.offset, channel);
-      }
-    }
-
-    m_encoded.clear();
-    m_point->finish_encoding(m_encoded);
-    for(const Part& p : m_parts)
-    {
-      if(p.type == BYTE14)
-        m_bytes[p.index].finish_encoding(m_encoded);
-      else
-        m_colors[p.index].finish_encoding(m_encoded);
-    }
-    CGAL_assertion(m_encoded.size() == m_layers.size());
-    for(const std::vector<unsigned char>* layer : m_encoded)
-    {
-      store_little_endian<std::uint32_t>(number, layer ? std::uint32_t(layer->size()) : 0u);
+      store_little_endian<std::uint32_t>(number, std::uint32_t(layer.size()));
       out.insert(out.end(), number, number + 4);
     }
-    for(const std::vector<unsigned char>* layer : m_encoded)
-      if(layer)
-        out.insert(out.end(), layer->begin(), layer->end());
+    for(const std::vector<unsigned char>& layer : layers)
+      out.insert(out.end(), layer.begin(), layer.end());
   }
+
+  std::size_t layer_count() const { return m_layers.size(); }
 
 private:
   // An item after POINT14, and where its bytes and layers lie.
@@ -224,7 +256,15 @@ private:
   std::vector<Part> m_parts;
   std::vector<std::string> m_layer_names; // for the messages
   std::vector<Layer_bytes> m_layers;      // this chunk's, one per layer name
-  std::vector<const std::vector<unsigned char>*> m_encoded; // the layers encode() wrote
+  // An encoding task: POINT14 (part NO_PART) or an item after it, for BYTE14 its bytes [begin, end).
+  struct Task
+  {
+    std::size_t part = 0, begin = 0, end = 0;
+  };
+  static constexpr std::size_t NO_PART = std::size_t(-1);
+  static constexpr std::size_t BYTES_PER_TASK = 8;
+  std::vector<Task> m_tasks;
+  std::vector<std::vector<unsigned char>> m_encoded; // the layers encode() wrote
   std::size_t m_record_length = 0;
 };
 

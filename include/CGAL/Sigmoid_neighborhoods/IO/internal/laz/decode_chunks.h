@@ -50,6 +50,30 @@ public:
       m_layered->encode(records, count, out);
   }
 
+  // The same in tasks that run in parallel (one for a point-wise chunk, its single coder), each
+  // giving some of the chunk's `encode_layer_count()` layers, then assembled.
+  std::size_t encode_task_count() const { return m_pointwise ? 1 : m_layered->encode_task_count(); }
+  std::size_t encode_layer_count() const { return m_pointwise ? 1 : m_layered->layer_count(); }
+  void encode_task(std::size_t t, const unsigned char* records, std::size_t count,
+                   std::vector<std::vector<unsigned char>>& layers)
+  {
+    if(m_pointwise)
+    {
+      layers[0].clear();
+      m_pointwise->encode(records, count, layers[0]);
+    }
+    else
+      m_layered->encode_task(t, records, count, layers);
+  }
+  void assemble(const unsigned char* records, std::size_t count, const std::vector<std::vector<unsigned char>>& layers,
+                std::vector<unsigned char>& out) const
+  {
+    if(m_pointwise)
+      out.insert(out.end(), layers[0].begin(), layers[0].end());
+    else
+      m_layered->assemble(records, count, layers, out);
+  }
+
   void decode(const unsigned char* begin, const unsigned char* end, std::size_t count, unsigned char* out)
   {
     if(m_pointwise)

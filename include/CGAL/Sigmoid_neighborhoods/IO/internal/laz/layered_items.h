@@ -23,6 +23,15 @@ namespace Sigmoid_neighborhoods {
 namespace internal {
 namespace laz {
 
+// A finished layer's bytes, or none when it codes no change.
+inline void store_layer(const Arithmetic_encoder& encoder, bool changed, std::vector<unsigned char>& layer)
+{
+  if(changed)
+    layer.assign(encoder.bytes().begin(), encoder.bytes().end());
+  else
+    layer.clear();
+}
+
 // The RGB14 item (one layer) and the RGBNIR14 item (two: RGB, then NIR), one model set and last
 // colour per scanner channel. In item version 3 (the one read), a switch back to a channel met before
 // in the chunk predicts that point from the previous channel's last colour and stores it there
@@ -81,8 +90,8 @@ public:
   }
 
   // Encoding a chunk: start_encoding() with its first record's item, encode() with each next one,
-  // then finish_encoding() appends the layers (nullptr for a layer that codes no change: LASzip
-  // writes it as 0 bytes, and a decoder keeps the first values).
+  // then finish_encoding() stores the layers' bytes in layers[0, layer_count()) (none for a layer
+  // that codes no change: LASzip writes it as 0 bytes, and a decoder keeps the first values).
   void start_encoding(const unsigned char* first, unsigned channel)
   {
     m_rgb_encoder.init();
@@ -121,14 +130,14 @@ public:
     last = value;
   }
 
-  void finish_encoding(std::vector<const std::vector<unsigned char>*>& layers)
+  void finish_encoding(std::vector<unsigned char>* layers)
   {
     m_rgb_encoder.done();
-    layers.push_back(m_rgb_changed ? &m_rgb_encoder.bytes() : nullptr);
+    store_layer(m_rgb_encoder, m_rgb_changed, layers[0]);
     if(m_nir)
     {
       m_nir_encoder.done();
-      layers.push_back(m_nir_changed ? &m_nir_encoder.bytes() : nullptr);
+      store_layer(m_nir_encoder, m_nir_changed, layers[1]);
     }
   }
 
@@ -226,14 +235,19 @@ public:
     }
   }
 
-  // Encoding a chunk, as Rgb14_coder's.
-  void start_encoding(const unsigned char* first, unsigned channel)
+  // Encoding a chunk, as Rgb14_coder's, of the bytes [begin, end) alone: each is a layer of its own,
+  // so that groups of them can be encoded apart.
+  void start_encoding(const unsigned char* first, unsigned channel, std::size_t begin, std::size_t end)
   {
+    CGAL_precondition(begin < end && end <= m_n);
+    m_begin = begin;
+    m_end = end;
     m_encoders.resize(m_n);
-    for(Arithmetic_encoder& e : m_encoders)
-      e.init();
+    for(std::size_t i = begin; i < end; ++i)
+      m_encoders[i].init();
     m_changed.assign(m_n, 0);
-    m_has.assign(m_n, 1); // every model fresh
+    m_has.assign(m_n, 0);
+    std::fill(m_has.begin() + std::ptrdiff_t(begin), m_has.begin() + std::ptrdiff_t(end), 1); // fresh models
     m_active = {false, false, false, false};
     m_current = channel;
     activate(channel, first);
@@ -244,7 +258,7 @@ public:
     const unsigned from = switch_to(channel);
     Channel& ch = m_channels[m_current];
     unsigned char* last = m_channels[from].last.data();
-    for(std::size_t i = 0; i < m_n; ++i)
+    for(std::size_t i = m_begin; i < m_end; ++i)
     {
       m_encoders[i].encode_symbol(ch.models[i], static_cast<unsigned char>(in[i] - last[i]));
       if(in[i] != last[i])
@@ -255,12 +269,13 @@ public:
     }
   }
 
-  void finish_encoding(std::vector<const std::vector<unsigned char>*>& layers)
+  // The layers of bytes [begin, end) to layers[0, end - begin).
+  void finish_encoding(std::vector<unsigned char>* layers)
   {
-    for(std::size_t i = 0; i < m_n; ++i)
+    for(std::size_t i = m_begin; i < m_end; ++i)
     {
       m_encoders[i].done();
-      layers.push_back(m_changed[i] ? &m_encoders[i].bytes() : nullptr);
+      store_layer(m_encoders[i], m_changed[i] != 0, layers[i - m_begin]);
     }
   }
 
@@ -303,6 +318,7 @@ private:
   std::vector<unsigned char> m_has;
   std::vector<Arithmetic_encoder> m_encoders;
   std::vector<unsigned char> m_changed;
+  std::size_t m_begin = 0, m_end = 0; // the bytes encoded
   std::array<Channel, 4> m_channels;
   std::array<bool, 4> m_active{};
   unsigned m_current = 0;

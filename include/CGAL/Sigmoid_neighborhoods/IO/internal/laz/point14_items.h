@@ -264,8 +264,9 @@ public:
   }
 
   // Encoding a chunk: start_encoding() with its first record, encode() with each next one (it returns
-  // the point's scanner channel, for the other items), then finish_encoding() appends the nine layers
-  // (nullptr for a layer that codes no change, written as 0 bytes; the XY and Z layers always are).
+  // the point's scanner channel: the record's), then finish_encoding() stores the nine layers' bytes
+  // in layers[0, 9) (none for a layer that codes no change, written as 0 bytes; the XY and Z layers
+  // are always written).
   unsigned start_encoding(const unsigned char* first)
   {
     for(Arithmetic_encoder& e : m_encoders)
@@ -380,13 +381,16 @@ public:
     return m_current;
   }
 
-  void finish_encoding(std::vector<const std::vector<unsigned char>*>& layers)
+  void finish_encoding(std::vector<unsigned char>* layers)
   {
     m_changed[XY_LAYER] = m_changed[Z_LAYER] = true;
     for(std::size_t i = 0; i < LAYER_COUNT; ++i)
     {
       m_encoders[i].done();
-      layers.push_back(m_changed[i] ? &m_encoders[i].bytes() : nullptr);
+      if(m_changed[i])
+        layers[i].assign(m_encoders[i].bytes().begin(), m_encoders[i].bytes().end());
+      else
+        layers[i].clear();
     }
   }
 
