@@ -67,7 +67,7 @@ for tile in $tiles; do
   [ "$(sort -u "$dir/original.txt" | tr '\n' ' ')" != "0 " ] || fail "predict $tile: no original class kept"
 done
 # the same compressed: decompressed, the LAS output byte for byte, in fewer bytes
-for tile in 77050_627755 77060_627760; do
+for tile in $tiles; do
   "$tool" classify predict "$dir/model.bin" "$data/labeled/ign_lidarhd_$tile.las" -o "$dir/p_$tile.laz" $codes \
     2> /dev/null || fail "predict $tile (LAZ)"
   "$las_copy" "$dir/p_$tile.laz" "$dir/p_$tile.unzipped.las" --threads 2 > /dev/null || fail "$tile: LAZ unread"
