@@ -36,7 +36,8 @@ namespace Sigmoid_neighborhoods {
   bytes dimensions) are compressed too; the wave packets of formats 4, 5, 9 and 10 are refused.
 
   The records given to `write()` are cut into chunks of `chunk_size` (LASzip's 50,000 by default),
-  compressed `threads` chunks at a time in parallel (0: the OpenMP or TBB default) and written in
+  compressed `threads` chunks at a time in parallel (0: the OpenMP or TBB default; the items of a
+  layered chunk and groups of its extra bytes are compressed apart, in parallel too) and written in
   order; the bytes of the file are the same for any thread count, and a chunk's bytes those LASzip
   writes for the same records. `close()` writes the chunk table, the EVLRs and the header again
   (counts, counts by return and bounding box as `Las_writer` writes them; the point format with bit
