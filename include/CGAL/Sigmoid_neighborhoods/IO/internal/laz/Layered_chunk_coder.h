@@ -168,18 +168,9 @@ public:
     }
   }
 
-  // Appends to `out` the chunk of the `count` (>= 1) records at `records`: what decode() reads back.
-  void encode(const unsigned char* records, std::size_t count, std::vector<unsigned char>& out)
-  {
-    m_encoded.resize(m_layers.size());
-    for(std::size_t t = 0; t < encode_task_count(); ++t)
-      encode_task(t, records, count, m_encoded);
-    assemble(records, count, m_encoded, out);
-  }
-
-  // Encoding splits into tasks that share nothing, to run in parallel: POINT14's nine layers, each
-  // colour item, and the extra bytes by groups of layers (an item after POINT14 follows the scanner
-  // channel of each record, which the record holds).
+  // Encoding what decode() reads back splits into tasks that share nothing, to run in parallel:
+  // POINT14's nine layers, each colour item, and the extra bytes by groups of layers (an item after
+  // POINT14 follows the scanner channel of each record, which the record holds); assemble() joins them.
   std::size_t encode_task_count() const { return m_tasks.size(); }
 
   // Encodes task `t` of the chunk of `count` (>= 1) records: its layers' bytes to `layers` (one per
@@ -264,7 +255,6 @@ private:
   static constexpr std::size_t NO_PART = std::size_t(-1);
   static constexpr std::size_t BYTES_PER_TASK = 8;
   std::vector<Task> m_tasks;
-  std::vector<std::vector<unsigned char>> m_encoded; // the layers encode() wrote
   std::size_t m_record_length = 0;
 };
 

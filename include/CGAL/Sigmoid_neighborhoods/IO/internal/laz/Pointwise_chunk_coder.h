@@ -86,17 +86,7 @@ public:
       throw Decode_error("the chunk of " + std::to_string(end - begin) + " bytes is shorter than its first record of " +
                          std::to_string(m_record_length) + " bytes");
     std::memcpy(out, begin, m_record_length);
-    for(const Step& s : m_steps)
-    {
-      const unsigned char* raw = out + s.offset;
-      switch(s.type)
-      {
-      case POINT10: m_points[s.index].init(raw); break;
-      case GPSTIME11: m_times[s.index].init(raw); break;
-      case RGB12: m_colours[s.index].init(raw); break;
-      default: m_bytes[s.index].init(raw); break;
-      }
-    }
+    init_items(out);
     if(count == 1)
       return; // the coder's bytes are not needed
     m_coder.init(begin + m_record_length, end);
@@ -147,17 +137,7 @@ public:
   {
     CGAL_precondition(count >= 1);
     out.insert(out.end(), records, records + m_record_length);
-    for(const Step& s : m_steps)
-    {
-      const unsigned char* raw = records + s.offset;
-      switch(s.type)
-      {
-      case POINT10: m_points[s.index].init(raw); break;
-      case GPSTIME11: m_times[s.index].init(raw); break;
-      case RGB12: m_colours[s.index].init(raw); break;
-      default: m_bytes[s.index].init(raw); break;
-      }
-    }
+    init_items(records);
     m_encoder.init();
     for(std::size_t p = 1; p < count; ++p)
     {
@@ -179,6 +159,22 @@ public:
   }
 
 private:
+  // Every item starts the chunk from its part of the chunk's first record (stored raw).
+  void init_items(const unsigned char* first)
+  {
+    for(const Step& s : m_steps)
+    {
+      const unsigned char* raw = first + s.offset;
+      switch(s.type)
+      {
+      case POINT10: m_points[s.index].init(raw); break;
+      case GPSTIME11: m_times[s.index].init(raw); break;
+      case RGB12: m_colours[s.index].init(raw); break;
+      default: m_bytes[s.index].init(raw); break;
+      }
+    }
+  }
+
   struct Step
   {
     Item_type type;

@@ -41,17 +41,8 @@ public:
   }
   explicit Chunk_coder(const Layout& layout) : Chunk_coder(layout.compressor, layout.items) {}
 
-  // Appends the chunk of `count` (>= 1) records to `out`.
-  void encode(const unsigned char* records, std::size_t count, std::vector<unsigned char>& out)
-  {
-    if(m_pointwise)
-      m_pointwise->encode(records, count, out);
-    else
-      m_layered->encode(records, count, out);
-  }
-
-  // The same in tasks that run in parallel (one for a point-wise chunk, its single coder), each
-  // giving some of the chunk's `encode_layer_count()` layers, then assembled.
+  // Encoding a chunk of records, in tasks that run in parallel (one for a point-wise chunk, its single
+  // coder), each giving some of the chunk's `encode_layer_count()` layers, then assembled.
   std::size_t encode_task_count() const { return m_pointwise ? 1 : m_layered->encode_task_count(); }
   std::size_t encode_layer_count() const { return m_pointwise ? 1 : m_layered->layer_count(); }
   void encode_task(std::size_t t, const unsigned char* records, std::size_t count,

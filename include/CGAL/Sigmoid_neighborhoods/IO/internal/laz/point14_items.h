@@ -151,12 +151,7 @@ public:
       if(m_has[i])
         m_decoders[i].init(layers[i].begin, layers[i].end);
     }
-    m_active = {false, false, false, false};
-    Point14_record record;
-    record.read(first);
-    m_current = record.scanner_channel();
-    activate(m_current, record);
-    return m_current;
+    return start_from(first);
   }
 
   // Decodes the next point into out[0, 30); returns its scanner channel.
@@ -273,12 +268,7 @@ public:
       e.init();
     m_changed.fill(false);
     m_has.fill(true); // every model fresh
-    m_active = {false, false, false, false};
-    Point14_record record;
-    record.read(first);
-    m_current = record.scanner_channel();
-    activate(m_current, record);
-    return m_current;
+    return start_from(first);
   }
 
   unsigned encode(const unsigned char* in)
@@ -395,6 +385,17 @@ public:
   }
 
 private:
+  // Every channel unused but the first record's, which starts from it; returns that channel.
+  unsigned start_from(const unsigned char* first)
+  {
+    m_active = {false, false, false, false};
+    Point14_record record;
+    record.read(first);
+    m_current = record.scanner_channel();
+    activate(m_current, record);
+    return m_current;
+  }
+
   // The GPS time coder: a change is coded as a multiple of the last difference, as a new
   // difference, as a jump to one of four remembered time sequences, or in full.
   static constexpr int GPS_MULTI = 500;         // codes 2 .. 499: that many times the last difference
