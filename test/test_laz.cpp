@@ -509,8 +509,8 @@ TEST_CASE("LAZ out: made-up records of formats 0-3 and 6-8 come back equal, for 
       CHECK(SN::internal::read_las_header(one).point_count == points);
       // 6 chunks, the last of 3 records; another block size and thread count: the same bytes
       CHECK(file_bytes(write_laz("made_up_3.laz", layout, records, 3, 1000, 1)) == file_bytes(one));
-      // a last chunk of one record
-      CHECK(decoded_records(write_laz("made_up_one.laz", layout, records, 2, 1001), 2) == records);
+      // chunks of 2,501: the last holds one record (5,003 = 2 x 2,501 + 1)
+      CHECK(decoded_records(write_laz("made_up_one.laz", layout, records, 2, 2501), 2) == records);
     }
 }
 
