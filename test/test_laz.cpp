@@ -446,19 +446,20 @@ TEST_CASE("LAZ out: made-up records of formats 0-3 and 6-8 come back equal, for 
       layout.scale = {{0.01, 0.01, 0.01}};
       const std::size_t length = layout.record_length, points = 5003;
       std::string records(points * length, '\0');
-      std::int32_t x = 1000, y = -2000, z = 300;
+      // unsigned: the walks wrap around 32 bits as the coders' differences do, without overflow
+      std::uint32_t x = 1000, y = std::uint32_t(-2000), z = 300;
       std::uint64_t times[4] = {0x41D0000000000000ull, 0x41E0000000000000ull, 0x4000000000000000ull, 0};
       std::uint32_t series = 0;
       for(std::size_t p = 0; p < points; ++p)
       {
         unsigned char* r = reinterpret_cast<unsigned char*>(&records[p * length]);
         // runs of small steps, jumps now and then, all 32 bits at times
-        x += std::int32_t(uniform(21)) - 10 + (uniform(50) == 0 ? std::int32_t(random()) : 0);
-        y += std::int32_t(uniform(7)) - 3;
-        z = uniform(30) == 0 ? std::int32_t(random()) : z + std::int32_t(uniform(5)) - 2;
-        SN::store_little_endian<std::int32_t>(r, x);
-        SN::store_little_endian<std::int32_t>(r + 4, y);
-        SN::store_little_endian<std::int32_t>(r + 8, z);
+        x += std::uint32_t(uniform(21)) - 10u + (uniform(50) == 0 ? std::uint32_t(random()) : 0u);
+        y += std::uint32_t(uniform(7)) - 3u;
+        z = uniform(30) == 0 ? std::uint32_t(random()) : z + std::uint32_t(uniform(5)) - 2u;
+        SN::store_little_endian<std::uint32_t>(r, x);
+        SN::store_little_endian<std::uint32_t>(r + 4, y);
+        SN::store_little_endian<std::uint32_t>(r + 8, z);
         SN::store_little_endian<std::uint16_t>(r + 12, std::uint16_t(uniform(4) == 0 ? random() : 200 + uniform(3)));
         const unsigned n = 1 + uniform(format >= 6 ? 15 : 7), ret = 1 + uniform(n);
         // GPS time: steps in one of four interleaved series, the same time again, far jumps
