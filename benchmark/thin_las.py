@@ -39,6 +39,34 @@ def read_las(path):
     return data, records, xyz, codes
 
 
+def write_las(data, records, xyz, keep, path):
+    """The file of `data` with the records where `keep` holds: the header and the variable-length
+    records copied, the point counts (legacy, LAS 1.4, per return) and the bounding box rewritten,
+    no EVLR."""
+    minor = data[25]
+    offset, = struct.unpack_from("<I", data, 96)
+    kept = records[keep]
+    out = bytearray(data[:offset])
+    n = len(kept)
+    struct.pack_into("<I", out, 107, n if n < 2**32 else 0)
+    points = xyz[keep]
+    struct.pack_into("<6d", out, 179, points[:, 0].max(), points[:, 0].min(), points[:, 1].max(),
+                     points[:, 1].min(), points[:, 2].max(), points[:, 2].min())
+    extended = (data[104] & 0x3F) >= 6
+    returns = (kept[:, 14] & 0x0F) if extended else (kept[:, 14] & 0x07)
+    legacy = [int(np.sum(returns == r)) for r in range(1, 6)]
+    struct.pack_into("<5I", out, 111, *legacy)
+    if minor == 4:
+        struct.pack_into("<Q", out, 247, n)
+        struct.pack_into("<15Q", out, 255, *[int(np.sum(returns == r)) for r in range(1, 16)])
+        struct.pack_into("<Q", out, 235, 0)  # no EVLRs copied
+        struct.pack_into("<I", out, 243, 0)
+    with open(path, "wb") as f:
+        f.write(out)
+        f.write(kept.tobytes())
+    return n
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("input")
@@ -48,8 +76,6 @@ def main():
     parser.add_argument("--seed", type=int, default=1)
     a = parser.parse_args()
     data, records, xyz, _ = read_las(a.input)
-    minor = data[25]
-    offset, = struct.unpack_from("<I", data, 96)
     count = len(records)
 
     if a.method == "random":
@@ -69,25 +95,7 @@ def main():
             else:
                 high = side
         keep = voxel_keep(high)
-    kept = records[keep]
-    out = bytearray(data[:offset])
-    n = len(kept)
-    struct.pack_into("<I", out, 107, n if n < 2**32 else 0)
-    points = xyz[keep]
-    struct.pack_into("<6d", out, 179, points[:, 0].max(), points[:, 0].min(), points[:, 1].max(),
-                     points[:, 1].min(), points[:, 2].max(), points[:, 2].min())
-    extended = (data[104] & 0x3F) >= 6
-    returns = (kept[:, 14] & 0x0F) if extended else (kept[:, 14] & 0x07)
-    legacy = [int(np.sum(returns == r)) for r in range(1, 6)]
-    struct.pack_into("<5I", out, 111, *legacy)
-    if minor == 4:
-        struct.pack_into("<Q", out, 247, n)
-        struct.pack_into("<15Q", out, 255, *[int(np.sum(returns == r)) for r in range(1, 16)])
-        struct.pack_into("<Q", out, 235, 0)  # no EVLRs copied
-        struct.pack_into("<I", out, 243, 0)
-    with open(a.output, "wb") as f:
-        f.write(out)
-        f.write(kept.tobytes())
+    n = write_las(data, records, xyz, keep, a.output)
     print("%s: %d of %d points (%s, factor %g)" % (a.output, n, count, a.method, a.factor))
 
 

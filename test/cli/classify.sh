@@ -177,6 +177,24 @@ grep -q "^| P | pyramid | no | 26 |" "$dir/experiment_pyramid/experiment.md" ||
   fail "the experiment's pyramid is not of two levels: $(grep '^| P' "$dir/experiment_pyramid/experiment.md")"
 grep -q "^| PS | pyramid + pyramid-sigmoid | no | 36 |" "$dir/experiment_pyramid/experiment.md" ||
   fail "the experiment's two pyramid groups are not train's: $(grep '^| PS' "$dir/experiment_pyramid/experiment.md")"
+# --choose-scales: each set with scales in metres at the scale train chooses for it (the same ladder's
+# scores as train's model above), the other sets as they were; refused without such a set
+"$tool" classify experiment --train "$b9" --test "$b9" -o "$dir/experiment_chosen" --orders 1 --cv-orders 0 \
+  --sets "K=k20;MP=cgal-metric,pyramid" --labels $labels --trees 2 --graphcut 0 --choose-scales \
+  2> "$dir/experiment_chosen.txt" || fail "experiment --choose-scales: $(cat "$dir/experiment_chosen.txt")"
+shortest=$(echo "$chosen" | sed 's/\.0$//') # the report's numbers are the shortest that read back
+grep -q "^| MP | cgal-metric + pyramid, first scale $shortest m (chosen) | no |" "$dir/experiment_chosen/experiment.md" ||
+  fail "the experiment's set MP is not at train's scale $chosen: $(grep '^| MP' "$dir/experiment_chosen/experiment.md")"
+grep -q "^| K | k20 | no |" "$dir/experiment_chosen/experiment.md" || fail "the set K changed with --choose-scales"
+ladder_of() { grep -o '"\(same_density\|thinned\)":\[[^]]*\]' "$1"; }
+tr -d ' \n' < "$dir/experiment_chosen/experiment.json" | ladder_of /dev/stdin | head -2 > "$dir/experiment_ladder.txt"
+sed -n 2p "$dir/chosen.bin" | ladder_of /dev/stdin > "$dir/train_ladder.txt"
+[ -s "$dir/train_ladder.txt" ] && cmp -s "$dir/experiment_ladder.txt" "$dir/train_ladder.txt" ||
+  fail "the experiment's ladder is not train's: $(cat "$dir/experiment_ladder.txt") / $(cat "$dir/train_ladder.txt")"
+tail -1 "$dir/experiment_chosen/experiment.csv" | grep -q ",$shortest$" || fail "no chosen scale in experiment.csv"
+expect_refusal "--choose-scales: no set of --sets has a group with scales in metres" "$tool" classify experiment \
+  --train "$b9" --test "$b9" -o "$dir/experiment_none" --sets "K=k20" --labels $labels --choose-scales
+[ ! -e "$dir/experiment_none" ] || fail "a refused experiment made its folder"
 
 # refusals, nothing written
 printf 'ply\nformat ascii 1.0\nelement vertex 30\nproperty float x\nproperty float y\nproperty float z\nend_header\n' > "$dir/unlabeled.ply"

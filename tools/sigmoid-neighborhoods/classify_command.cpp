@@ -36,7 +36,8 @@ const char* const CLASSIFY_USAGE =
   "       sigmoid-neighborhoods classify evaluate MODEL FILE... -o DIR [--graphcut STRENGTH] [--threads N]\n"
   "       sigmoid-neighborhoods classify experiment --train FILE,... --test FILE,... -o DIR [--sets SETS]\n"
   "                                [--orders 10] [--cv-orders 1] [--graphcut 0.2] [--labels MAP] [--trees 25]\n"
-  "                                [--depth 20] [--max-per-class N] [the feature options of train] [normals]\n"
+  "                                [--depth 20] [--max-per-class N] [--choose-scales] [the feature options of train]\n"
+  "                                [normals]\n"
   "  FILE: a labeled point set: LAS or LAZ (classification codes) or PLY with a label/class/classification property\n"
   "  --labels MAP: the classes and their codes, other codes ignored (default ground=2,low_vegetation=3+4,\n"
   "      high_vegetation=5,building=6)\n"
@@ -44,7 +45,7 @@ const char* const CLASSIFY_USAGE =
   "  --cgal-voxel S: the voxel of the groups cgal-metric and cgal-grid's first scale in metres, doubled per\n"
   "      scale, stored in the model (default 0.5); --cgal-scales N: the number of scales of cgal, cgal-metric and\n"
   "      cgal-grid (5)\n"
-  "  --choose-scales (train, experimental): --cgal-voxel and --pyramid-cell (one value) chosen among 0.0625,\n"
+  "  --choose-scales (train and experiment, experimental): --cgal-voxel and --pyramid-cell (one value) chosen among 0.0625,\n"
   "      0.125, 0.25, 0.5 and 1 m on the training files: two folds of a 4 x 4 checkerboard, each predicted\n"
   "      by a forest trained on the other (at most 4000 points a class), at the files' density and trained\n"
   "      on a copy thinned 4x; the best of the worse of the two mean IoUs, stored in the model with the\n"
@@ -74,7 +75,9 @@ const char* const CLASSIFY_USAGE =
   "      A to Q of benchmark/README.md) in --orders feature orders, with and without graph-cut, and writes\n"
   "      DIR/experiment.md, experiment.csv, experiment.json and runs.csv; each set is also cross-validated on\n"
   "      the training files (each left out in turn, --cv-orders orders), and the set and graph-cut of the\n"
-  "      best cross-validated mean IoU are reported as the choice\n";
+  "      best cross-validated mean IoU are reported as the choice; with --choose-scales, each set with\n"
+  "      scales in metres is trained and tested at the first scale that train would choose for it on the\n"
+  "      training files, and the ladder's scores are reported\n";
 
 std::vector<std::string> with_feature_options(std::vector<std::string> valued)
 {

@@ -10,6 +10,7 @@
 #include "classification/confusion.h"
 #include "classification/feature_groups.h"
 #include "classification/label_mapping.h"
+#include "classification/scale_choice.h"
 #include "command_line.h"
 #include "model_input.h"
 
@@ -26,6 +27,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
@@ -55,7 +57,39 @@ struct Feature_set_spec
 {
   std::string name;
   std::vector<std::string> groups;
+  // --choose-scales: the first scale in metres chosen for this set on the training files (sets
+  // without scales in metres keep the options')
+  std::optional<Scale_choice_report> scale_choice;
 };
+
+// A group as computed for a set: at the set's chosen first scale in metres where it has scales in
+// metres, else with the options alone.
+struct Group_at_scale
+{
+  std::string group;
+  double first_scale = 0.; // 0: the options' scales
+
+  std::string key() const { return first_scale > 0. ? group + " at " + number17(first_scale) + " m" : group; }
+};
+
+std::vector<Group_at_scale> groups_at_scales(const Feature_set_spec& set)
+{
+  std::vector<Group_at_scale> groups;
+  for(const std::string& g : set.groups)
+  {
+    const Feature_group* entry = find_feature_group(g);
+    groups.push_back({g, set.scale_choice && entry->metric_scales ? set.scale_choice->chosen : 0.});
+  }
+  return groups;
+}
+
+// The options a set's forest is trained and its groups computed with.
+Feature_options set_options(const Feature_options& base, const Feature_set_spec& set)
+{
+  Feature_options o = set.scale_choice ? with_first_scale(base, set.scale_choice->chosen) : base;
+  o.groups = set.groups;
+  return o;
+}
 
 std::vector<Feature_set_spec> parse_sets(const std::string& text)
 {
@@ -81,8 +115,8 @@ std::vector<std::string> split_list(const std::string& text, const std::string& 
   return items;
 }
 
-// One file of the experiment: read once, each feature group computed once (and timed), the sets'
-// columns assembled from the groups.
+// One file of the experiment: read once, each feature group computed once per scale (and timed), the
+// sets' columns assembled from the groups (keyed by Group_at_scale::key()).
 struct Experiment_file
 {
   Featured_file file; // columns empty: see groups
@@ -92,23 +126,25 @@ struct Experiment_file
 
 Experiment_file read_experiment_file(const std::string& path, const Label_mapping& labels,
                                      const SN::Normal_options& normals, const Feature_options& base,
-                                     const std::vector<std::string>& groups)
+                                     const std::vector<Group_at_scale>& groups)
 {
   Experiment_file e;
   Feature_options all = base;
-  all.groups = groups;
+  for(const Group_at_scale& g : groups)
+    if(std::find(all.groups.begin(), all.groups.end(), g.group) == all.groups.end())
+      all.groups.push_back(g.group); // the neighbor rows do not depend on the scales in metres
   // read with the rows of every group kept, then no group: each is computed and timed below, on those rows
   e.file = read_and_feature(path, labels, true, normals, all, false);
-  for(const std::string& group : groups)
+  for(const Group_at_scale& g : groups)
   {
-    Feature_options one = base;
-    one.groups = {group};
+    Feature_options one = g.first_scale > 0. ? with_first_scale(base, g.first_scale) : base;
+    one.groups = {g.group};
     CGAL::Real_timer timer;
     timer.start();
-    e.groups[group] = compute_feature_columns(e.file.model, one, [&](const std::string& step) {
+    e.groups[g.key()] = compute_feature_columns(e.file.model, one, [&](const std::string& step) {
       progress(path + ": " + step);
     });
-    e.seconds[group] = timer.time();
+    e.seconds[g.key()] = timer.time();
   }
   return e;
 }
@@ -124,12 +160,12 @@ Featured_file with_set(const Experiment_file& e, const Feature_set_spec& set)
   // pyramid groups, the equal-weight levels of pyramid-sigmoid beside pyramid) is kept once, as train
   // computes the set
   std::set<std::string> names;
-  for(const std::string& group : set.groups)
+  for(const Group_at_scale& g : groups_at_scales(set))
   {
-    for(const Feature_column& c : e.groups.at(group))
+    for(const Feature_column& c : e.groups.at(g.key()))
       if(names.insert(c.name).second)
         f.columns.push_back(c);
-    f.seconds_features += e.seconds.at(group);
+    f.seconds_features += e.seconds.at(g.key());
   }
   return f;
 }
@@ -200,8 +236,8 @@ std::vector<Set_summary> summarize(const std::vector<Feature_set_spec>& sets, co
       s.classify_seconds /= double(n);
       for(const auto* files : {&train_files, &test_files})
         for(const Experiment_file& e : *files)
-          for(const std::string& g : set.groups)
-            s.feature_seconds += e.seconds.at(g);
+          for(const Group_at_scale& g : groups_at_scales(set))
+            s.feature_seconds += e.seconds.at(g.key());
       if(!train_files.empty())
         s.features = with_set(train_files.front(), set).columns.size();
       result.push_back(std::move(s));
@@ -217,6 +253,9 @@ void write_experiment(const std::string& dir, const std::vector<Feature_set_spec
   const Label_mapping& m = base.labels;
   const std::size_t classes = m.names.size();
   std::vector<Set_summary> summaries = summarize(sets, runs, train_files, test_files, classes);
+  auto spec_of = [&](const std::string& name) -> const Feature_set_spec& {
+    return *std::find_if(sets.begin(), sets.end(), [&](const Feature_set_spec& set) { return set.name == name; });
+  };
   const Set_summary* chosen = nullptr;
   for(Set_summary& s : summaries)
   {
@@ -260,7 +299,7 @@ void write_experiment(const std::string& dir, const std::vector<Feature_set_spec
     out << "set,groups,graphcut,features,mean_iou_mean,mean_iou_min,mean_iou_max,overall_accuracy_mean,mean_f1_mean";
     for(const std::string& name : m.names)
       out << ",iou_" << name << "_mean";
-    out << ",feature_seconds,train_seconds_mean,classify_seconds_mean,cross_validated_mean_iou\n";
+    out << ",feature_seconds,train_seconds_mean,classify_seconds_mean,cross_validated_mean_iou,chosen_first_scale\n";
     for(const Set_summary& s : summaries)
     {
       std::string groups;
@@ -275,7 +314,8 @@ void write_experiment(const std::string& dir, const std::vector<Feature_set_spec
         out << ',' << number17(v);
       out << ',' << number_fixed(s.feature_seconds, 2) << ',' << number_fixed(s.train_seconds, 2) << ','
           << number_fixed(s.classify_seconds, 2) << ','
-          << (std::isnan(s.cross_validated_miou) ? std::string() : number17(s.cross_validated_miou)) << '\n';
+          << (std::isnan(s.cross_validated_miou) ? std::string() : number17(s.cross_validated_miou)) << ','
+          << (spec_of(s.set).scale_choice ? number17(spec_of(s.set).scale_choice->chosen) : std::string()) << '\n';
     }
   });
 
@@ -303,6 +343,8 @@ void write_experiment(const std::string& dir, const std::vector<Feature_set_spec
                           {"classify_seconds_mean", s.classify_seconds}};
     if(!std::isnan(s.cross_validated_miou))
       row["cross_validated_mean_iou"] = s.cross_validated_miou;
+    if(const std::optional<Scale_choice_report>& c = spec_of(s.set).scale_choice)
+      row["scale_choice"] = scale_choice_json(*c);
     for(std::size_t c = 0; c < classes; ++c)
       row["iou_mean"][m.names[c]] = s.class_iou_mean[c];
     j["sets"].push_back(row);
@@ -330,10 +372,10 @@ void write_experiment(const std::string& dir, const std::vector<Feature_set_spec
     for(const Set_summary& s : summaries)
     {
       std::string groups;
-      for(const Feature_set_spec& set : sets)
-        if(set.name == s.set)
-          for(const std::string& g : set.groups)
-            groups += (groups.empty() ? "" : " + ") + g;
+      for(const std::string& g : spec_of(s.set).groups)
+        groups += (groups.empty() ? "" : " + ") + g;
+      if(spec_of(s.set).scale_choice)
+        groups += ", first scale " + number17(spec_of(s.set).scale_choice->chosen) + " m (chosen)";
       out << "| " << s.set << " | " << groups << " | " << (s.graphcut ? "yes" : "no") << " | " << s.features << " | "
           << fixed3(s.miou_mean) << " [" << fixed3(s.miou_min) << ", " << fixed3(s.miou_max) << "] | "
           << percent(s.oa_mean) << " | " << fixed3(s.mf1_mean) << " |";
@@ -348,6 +390,31 @@ void write_experiment(const std::string& dir, const std::vector<Feature_set_spec
           << cv_orders << " order" << (cv_orders == 1 ? "" : "s") << "): **" << chosen->set << "**, "
           << (chosen->graphcut ? "with" : "without") << " graph-cut, which scores " << fixed3(chosen->miou_mean)
           << " [" << fixed3(chosen->miou_min) << ", " << fixed3(chosen->miou_max) << "] on the test files.\n";
+    bool first = true;
+    for(const Feature_set_spec& set : sets)
+      if(set.scale_choice)
+      {
+        const Scale_choice_report& c = *set.scale_choice;
+        if(first)
+          out << "\nThe first scale in metres of the sets with such scales, chosen on the training files alone "
+                 "(--choose-scales, as classify train chooses it: two folds of a 4 x 4 checkerboard, at most "
+              << c.cap << " training points a class and fold; mean IoU at the files' density / trained on a copy "
+                          "thinned 4x, the worse of the two decides):\n\n| set | ";
+        if(first)
+        {
+          for(double scale : c.ladder)
+            out << number17(scale) << " m | ";
+          out << "chosen | time |\n|---|";
+          for(std::size_t i = 0; i <= c.ladder.size() + 1; ++i)
+            out << "---:|";
+          out << '\n';
+          first = false;
+        }
+        out << "| " << set.name << " | ";
+        for(std::size_t i = 0; i < c.ladder.size(); ++i)
+          out << fixed3(c.same_density[i]) << " / " << fixed3(c.thinned[i]) << " | ";
+        out << "**" << number17(c.chosen) << " m** | " << number_fixed(c.seconds, 1) << " s |\n";
+      }
   });
   std::cerr << dir << "/experiment.md: " << sets.size() << " feature sets, " << orders << " orders, "
             << runs.size() << " runs\n";
@@ -413,7 +480,7 @@ int run_classify_experiment(int argc, char** argv)
                        with_feature_options(with_normal_options({"-o", "--output", "--train", "--test", "--sets",
                                                                  "--orders", "--graphcut", "--labels", "--trees",
                                                                  "--depth", "--cv-orders", "--max-per-class"})),
-                       with_normal_flags({"-h", "--help"}), NORMAL_TRIPLE_OPTIONS);
+                       with_normal_flags({"-h", "--help", "--choose-scales"}), NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, CLASSIFY_USAGE))
     return EXIT_OK;
   const std::string output = args.output();
@@ -421,7 +488,7 @@ int run_classify_experiment(int argc, char** argv)
     throw Usage_error("classify experiment needs --train FILE,... --test FILE,... -o DIR");
   const std::vector<std::string> train_paths = split_list(args.get("--train"), "--train");
   const std::vector<std::string> test_paths = split_list(args.get("--test"), "--test");
-  const std::vector<Feature_set_spec> sets = parse_sets(args.get("--sets", DEFAULT_EXPERIMENT_SETS));
+  std::vector<Feature_set_spec> sets = parse_sets(args.get("--sets", DEFAULT_EXPERIMENT_SETS));
   const unsigned int orders = args.get_unsigned("--orders", 10);
   const unsigned int cv_orders = args.get_unsigned("--cv-orders", 1);
   const double graphcut = args.has("--graphcut") ? read_graphcut(args) : 0.2;
@@ -434,12 +501,31 @@ int run_classify_experiment(int argc, char** argv)
   base.trees = args.get_unsigned("--trees", 25);
   base.depth = args.get_unsigned("--depth", 20);
   base.max_per_class = args.get_unsigned("--max-per-class", 0);
-  std::vector<std::string> groups;
-  for(const Feature_set_spec& set : sets)
-    for(const std::string& g : set.groups)
-      if(std::find(groups.begin(), groups.end(), g) == groups.end())
-        groups.push_back(g);
+  const bool choose_scales = args.has("--choose-scales");
+  if(choose_scales && (args.has("--cgal-voxel") || args.has("--pyramid-cell")))
+    throw Usage_error("--choose-scales chooses --cgal-voxel and --pyramid-cell: give them or it");
+  if(choose_scales && std::none_of(sets.begin(), sets.end(), [&](const Feature_set_spec& set) {
+       return has_metric_scales(set_options(base.features, set));
+     }))
+    throw Usage_error("--choose-scales: no set of --sets has a group with scales in metres (cgal-metric, cgal-grid, "
+                      "pyramid, pyramid-sigmoid)");
   create_output_folder(output);
+  // each set with scales in metres gets the choice that classify train would make for it
+  if(choose_scales)
+    for(Feature_set_spec& set : sets)
+    {
+      Classifier_settings s = base;
+      s.features = set_options(base.features, set);
+      if(!has_metric_scales(s.features))
+        continue;
+      progress(set.name + ": choosing the scales in metres");
+      set.scale_choice = choose_first_scale(train_paths, s);
+    }
+  std::vector<Group_at_scale> groups;
+  for(const Feature_set_spec& set : sets)
+    for(const Group_at_scale& g : groups_at_scales(set))
+      if(std::none_of(groups.begin(), groups.end(), [&](const Group_at_scale& h) { return h.key() == g.key(); }))
+        groups.push_back(g);
 
   std::vector<Experiment_file> train_files, test_files;
   for(const std::string& path : train_paths)
@@ -460,7 +546,7 @@ int run_classify_experiment(int argc, char** argv)
       progress(set.name + ": order " + std::to_string(order) + " of " + std::to_string(orders));
       Trained t;
       t.settings = base;
-      t.settings.features.groups = set.groups;
+      t.settings.features = set_options(base.features, set);
       t.settings.feature_order_seed = order;
       train(train_set, t);
       for(bool with_graphcut : {false, true})
@@ -503,7 +589,7 @@ int run_classify_experiment(int argc, char** argv)
               others.push_back(with_set(train_files[f], set));
           Trained t;
           t.settings = base;
-          t.settings.features.groups = set.groups;
+          t.settings.features = set_options(base.features, set);
           t.settings.feature_order_seed = order;
           train(others, t);
           const Featured_file held_out = with_set(train_files[left_out], set);

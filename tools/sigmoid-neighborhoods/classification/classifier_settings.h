@@ -55,6 +55,18 @@ struct Classifier_settings
   std::optional<Scale_choice_report> scale_choice; // when classify train chose the scales
 };
 
+inline nlohmann::json scale_choice_json(const Scale_choice_report& c)
+{
+  return {{"ladder", c.ladder},
+          {"same_density", c.same_density},
+          {"thinned", c.thinned},
+          {"chosen", c.chosen},
+          {"cap_per_class", c.cap},
+          {"training_points", c.training_points},
+          {"test_points", c.test_points},
+          {"seconds", c.seconds}};
+}
+
 inline nlohmann::json settings_json(const Classifier_settings& s)
 {
   nlohmann::json j;
@@ -82,17 +94,7 @@ inline nlohmann::json settings_json(const Classifier_settings& s)
   j["feature_order_seed"] = s.feature_order_seed;
   j["max_per_class"] = s.max_per_class;
   if(s.scale_choice) // for the reader; the scales themselves are the features' settings above
-  {
-    const Scale_choice_report& c = *s.scale_choice;
-    j["scale_choice"] = {{"ladder", c.ladder},
-                         {"same_density", c.same_density},
-                         {"thinned", c.thinned},
-                         {"chosen", c.chosen},
-                         {"cap_per_class", c.cap},
-                         {"training_points", c.training_points},
-                         {"test_points", c.test_points},
-                         {"seconds", c.seconds}};
-  }
+    j["scale_choice"] = scale_choice_json(*s.scale_choice);
   return j;
 }
 
