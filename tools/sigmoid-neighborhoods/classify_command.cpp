@@ -72,12 +72,12 @@ const char* const CLASSIFY_USAGE =
   "  evaluate writes DIR/evaluation.md, .csv, .json: confusion matrix, precision, recall, F1, IoU per\n"
   "      class, overall accuracy, mean F1, mean IoU\n"
   "  experiment trains and tests every feature set of --sets (NAME=GROUP,GROUP;NAME=...; default: the sets\n"
-  "      A to Q of benchmark/README.md) in --orders feature orders, with and without graph-cut, and writes\n"
-  "      DIR/experiment.md, experiment.csv, experiment.json and runs.csv; each set is also cross-validated on\n"
-  "      the training files (each left out in turn, --cv-orders orders), and the set and graph-cut of the\n"
-  "      best cross-validated mean IoU are reported as the choice; with --choose-scales, each set with\n"
-  "      scales in metres is trained and tested at the first scale that train would choose for it on the\n"
-  "      training files, and the ladder's scores are reported\n";
+  "      A to Q of benchmark/README.md) in --orders feature orders, with and without graph-cut (--graphcut 0:\n"
+  "      without alone), and writes DIR/experiment.md, experiment.csv, experiment.json and runs.csv; each set\n"
+  "      is also cross-validated on the training files (each left out in turn, --cv-orders orders), and the\n"
+  "      set and graph-cut of the best cross-validated mean IoU are reported as the choice; with\n"
+  "      --choose-scales, each set with scales in metres is trained and tested at the first scale that\n"
+  "      train would choose for it on the training files, and the ladder's scores are reported\n";
 
 std::vector<std::string> with_feature_options(std::vector<std::string> valued)
 {

@@ -533,6 +533,8 @@ int run_classify_experiment(int argc, char** argv)
   for(const std::string& path : test_paths)
     test_files.push_back(read_experiment_file(path, base.labels, base.normals, base.features, groups));
 
+  // --graphcut 0: the runs without graph-cut alone (with it they would be the same)
+  const std::size_t graphcut_variants = graphcut > 0. ? 2 : 1;
   std::vector<Run_result> runs;
   for(const Feature_set_spec& set : sets)
   {
@@ -549,8 +551,9 @@ int run_classify_experiment(int argc, char** argv)
       t.settings.features = set_options(base.features, set);
       t.settings.feature_order_seed = order;
       train(train_set, t);
-      for(bool with_graphcut : {false, true})
+      for(std::size_t variant = 0; variant < graphcut_variants; ++variant)
       {
+        const bool with_graphcut = variant == 1;
         Run_result r;
         r.set = set.name;
         r.order = order;
@@ -593,18 +596,18 @@ int run_classify_experiment(int argc, char** argv)
           t.settings.feature_order_seed = order;
           train(others, t);
           const Featured_file held_out = with_set(train_files[left_out], set);
-          for(int with_graphcut = 0; with_graphcut < 2; ++with_graphcut)
+          for(std::size_t with_graphcut = 0; with_graphcut < graphcut_variants; ++with_graphcut)
           {
             const Prediction p = predict(held_out, t.settings, std::string(), &*t.forest,
                                          with_graphcut ? graphcut : 0.);
             for(std::size_t i = 0; i < p.classes.size(); ++i)
-              pooled[std::size_t(with_graphcut)].add(held_out.truth[i], p.classes[i]);
+              pooled[with_graphcut].add(held_out.truth[i], p.classes[i]);
           }
         }
-        for(std::size_t g = 0; g < 2; ++g)
+        for(std::size_t g = 0; g < graphcut_variants; ++g)
           sum[g] += pooled[g].mean_iou();
       }
-      for(std::size_t g = 0; g < 2; ++g)
+      for(std::size_t g = 0; g < graphcut_variants; ++g)
         if(cv_orders > 0)
           cross_validation[{set.name, g == 1}] = sum[g] / double(cv_orders);
     }
