@@ -6,6 +6,7 @@
 // and on the six IGN LiDAR HD tiles of the shared data; without halos, the share of points whose
 // records differ (the border effect); the catalog's refusals.
 
+#include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_tile_catalog.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/read_tile_with_halo.h>
@@ -118,6 +119,9 @@ std::vector<double> check_tiles_equal_union(const SN::Tile_catalog& catalog, con
   const auto& all_records = u.records;
   std::size_t next = 0; // the union's point the next tile starts with
   std::vector<double> widths;
+  std::map<Position_bits, std::size_t> union_index;
+  for(std::size_t i = 0; i < all.points.size(); ++i)
+    union_index.emplace(position_bits(all.points[i]), i);
   for(std::size_t t = 0; t < catalog.tiles.size(); ++t)
   {
     INFO("tile " << catalog.tiles[t].name);
@@ -139,6 +143,26 @@ std::vector<double> check_tiles_equal_union(const SN::Tile_catalog& catalog, con
       differing += !same;
     }
     CHECK(differing == 0);
+    // a LAS tile's records: each with its point, the union's at its position (a seam duplicate's is
+    // an earlier tile's point, in the halo, whose record and normal are the union's too)
+    const std::string extension = SN::lower_case_extension(catalog.tiles[t].path);
+    if(extension != "las" && extension != "laz")
+      CHECK(tile.point_of_record.empty());
+    else if(tile.size() > 0)
+    {
+      CHECK(tile.point_of_record.size() == tile.input_points);
+      std::size_t wrong = 0, seams = 0;
+      for(std::size_t point : tile.point_of_record)
+      {
+        REQUIRE(point < tile.points.points.size());
+        seams += point < tile.first;
+        const auto u = union_index.find(position_bits(tile.points.points[point]));
+        wrong += u == union_index.end() || record_bits(records[point]) != record_bits(all_records[u->second]) ||
+                 tile.points.normals[point] != all.normals[u->second];
+      }
+      CHECK(wrong == 0);
+      CHECK(seams == tile.seam_duplicates);
+    }
   }
   CHECK(next == all.points.size()); // the tiles' own points, one after the other, are the union
   return widths;

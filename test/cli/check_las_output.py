@@ -11,9 +11,11 @@
 # is the code (CODES: one per class index, comma-separated) of the PLY's scalar_label at its position
 # (the PLY holds the distinct positions in their first record's order).
 # With --csv CSV NAME[=COLUMN]..., each named dimension holds the CSV column of that name at its record's
-# position (to float precision; blanks as NaN). The input's EVLRs follow the output's points unchanged.
+# position (to float precision; blanks as NaN). With --union-csv, the CSV holds the rows of several
+# files (a catalog's union, one row per distinct position): each record's row is the one at its
+# coordinates. The input's EVLRs follow the output's points unchanged.
 # usage: check_las_output.py OUTPUT.las INPUT.las [--changed classification|xyz] [--values NAME]
-#                            [--classes PREDICTION.ply CODES] [--csv CSV NAME[=COLUMN]...]
+#                            [--classes PREDICTION.ply CODES] [--csv|--union-csv CSV NAME[=COLUMN]...]
 import struct
 import sys
 
@@ -101,11 +103,25 @@ def dimension(out, layout, name):
     return column * scale + offset
 
 
-def check_csv(out, layout, csv, names):
+def row_at_position(out, h, table):
+    """per record, the CSV row at its coordinates (the reader's: integer times scale plus offset)"""
+    xyz = out[:, :12].copy().view("<i4").reshape(-1, 3).astype(np.float64)
+    coords = xyz * np.array(h["scale"]) + np.array(h["offset"])
+    rows = {(x, y, z): i for i, (x, y, z) in enumerate(zip(table["x"], table["y"], table["z"]))}
+    try:
+        return np.array([rows[(x, y, z)] for x, y, z in coords], dtype=np.int64)
+    except KeyError as missing:
+        fail("no CSV row at the position %s" % (missing,))
+
+
+def check_csv(out, layout, csv, names, h=None):
     table = np.genfromtxt(csv, delimiter=",", names=True)
-    point, count = point_of_record(out)
-    if len(table) != count:
-        fail("%d distinct positions, %d CSV rows" % (count, len(table)))
+    if h is not None:
+        point = row_at_position(out, h, table)
+    else:
+        point, count = point_of_record(out)
+        if len(table) != count:
+            fail("%d distinct positions, %d CSV rows" % (count, len(table)))
     for name in names:  # NAME, or NAME=COLUMN where the CSV names it otherwise
         name, column = name.split("=") if "=" in name else (name, name)
         got, expected = dimension(out, layout, name), table[column][point]
@@ -182,6 +198,8 @@ def main():
     added = [name for kind, options, name, _, _ in ds if layout[name][0] >= copied]
     if "--csv" in args:
         check_csv(out, layout, args[args.index("--csv") + 1], args[args.index("--csv") + 2:])
+    if "--union-csv" in args:
+        check_csv(out, layout, args[args.index("--union-csv") + 1], args[args.index("--union-csv") + 2:], h)
     if hi.get("evlrs"):
         if h.get("evlrs") != hi["evlrs"] or data[h["evlr_start"]:] != data_in[hi["evlr_start"]:]:
             fail("the input's EVLRs are not after the points")

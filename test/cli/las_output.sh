@@ -9,7 +9,7 @@
 # EVLRs); a LAZ input gives the LAS twin's output byte for byte; an output read again by the tool
 # gives the input's results; a point set of another format gets format 6 records within half a
 # scale unit. LAZ output (-o OUT.laz), decompressed by the las_copy example: the LAS output byte for
-# byte, in fewer bytes. The refusals exit 2 with one line and write nothing.
+# byte, in fewer bytes. A catalog's tile (--tile) gets its file's records with the union's results. The refusals exit 2 with one line and write nothing.
 # usage: las_output.sh TOOL SHARED_DATA_FOLDER PYTHON CHECKER LAS_COPY
 set -eu
 tool=$1
@@ -136,15 +136,35 @@ assert scale == (1e-8,) * 3, scale  # half extent 3.7: the smallest power of ten
 assert len(a) == len(b) and all(np.abs(a[c] - b[c]).max() <= 0.5e-8 * 1.0001 for c in 'xyz'), 'coordinates'
 " || fail "a point set's LAS output"
 
+# a catalog's tiles (--tile): each tile's file's records with the union's results at their positions
+# (a seam duplicate's: those of the earlier tile's point it was merged into); LAZ as the LAS
+for t in 77050_627760 77055_627760 77055_627755; do echo "$data/labeled/ign_lidarhd_$t.las"; done > "$dir/tiles.txt"
+"$tool" optimal --catalog "$dir/tiles.txt" -o "$dir/union.csv" $search 2> /dev/null || fail "optimal: the union"
+seams=0
+for name in $("$tool" catalog list "$dir/tiles.txt" --names); do
+  "$tool" optimal --catalog "$dir/tiles.txt" --tile "$name" -o "$dir/$name.laz" $search 2> "$dir/tile.txt" ||
+    fail "optimal --tile $name: $(cat "$dir/tile.txt")"
+  "$las_copy" "$dir/$name.laz" "$dir/$name.las" > /dev/null || fail "tile $name: LAZ unread"
+  "$python" "$checker" "$dir/$name.las" "$data/labeled/$name.las" --union-csv "$dir/union.csv" $columns \
+    > /dev/null || fail "optimal --tile $name: the LAS output"
+  [ -s "$dir/$name.tile.json" ] || fail "tile $name: no tile description"
+  seams=$((seams + $(grep -o '"seam_duplicates": [0-9]*' "$dir/$name.tile.json" | grep -o '[0-9]*$')))
+done
+[ "$seams" -gt 0 ] || fail "no seam duplicate among the tiles: the test does not see their records"
+"$tool" classify predict "$dir/model.bin" --catalog "$dir/tiles.txt" --tile ign_lidarhd_77055_627760 \
+  -o "$dir/p_tile.las" 2> /dev/null || fail "classify predict --tile to LAS"
+"$python" "$checker" "$dir/p_tile.las" "$data/labeled/ign_lidarhd_77055_627760.las" --changed classification \
+  > "$dir/names.txt" || fail "classify predict --tile: the LAS output"
+
 # refusals
-expect_refusal "LAS output of a catalog" "$tool" optimal --catalog "$data/laz" -o "$dir/x.laz" $search
+expect_refusal "LAS output of the catalog's union" "$tool" optimal --catalog "$data/laz" -o "$dir/x.laz" $search
 expect_refusal "of 31 at most" "$tool" classify predict "$dir/model.bin" "$data/laz/simple.las" -o "$dir/x.las" \
   --class-codes ground=40
 expect_refusal "is not NAME=CODE" "$tool" classify predict "$dir/model.bin" "$data/laz/simple.las" -o "$dir/x.las" \
   --class-codes water=9
 expect_refusal "goes with -o OUT.las" "$tool" classify predict "$dir/model.bin" "$data/laz/simple.las" -o "$dir/x.ply" \
   --class-codes ground=2
-expect_refusal "LAS output of a catalog" "$tool" optimal --catalog "$data/laz" -o "$dir/x.las" $search
+expect_refusal "LAS output of the catalog's union" "$tool" optimal --catalog "$data/laz" -o "$dir/x.las" $search
 [ ! -e "$dir/x.las" ] && [ ! -e "$dir/x.laz" ] && [ ! -e "$dir/x.ply" ] || fail "a refused command wrote its output"
 ls "$dir" | grep -q "\.tmp\." && fail "a temporary file left behind"
 echo "las-output-ok"

@@ -78,8 +78,8 @@ std::vector<int> read_class_codes(const Arguments& args, const Label_mapping& la
 // The input's records with the predicted class's code as their classification, the class's
 // confidence and the record's own classification as extra bytes dimensions (las_output.h); a point
 // without a class (its features undefined) is written 1, unclassified.
-void write_prediction_las(const std::string& path, const Featured_file& file, const Prediction& p,
-                          const std::vector<int>& codes, unsigned int threads)
+void write_prediction_las(const std::string& path, const Las_output_points& points, const Featured_file& file,
+                          const Prediction& p, const std::vector<int>& codes, unsigned int threads)
 {
   typedef CGAL::Sigmoid_neighborhoods::Las_extra_bytes_type Type;
   Las_results r;
@@ -102,7 +102,7 @@ void write_prediction_las(const std::string& path, const Featured_file& file, co
     CGAL::Sigmoid_neighborhoods::store_las_extra(record, l, 0, c < 0 ? 0. : double(p.confidence[std::size_t(c)][i]));
     CGAL::Sigmoid_neighborhoods::store_las_extra(record, l, 1, double(original));
   };
-  write_las_results(path, file.path, file.model, r, threads);
+  write_las_results(path, points, file.model, r, threads);
 }
 
 } // namespace
@@ -173,7 +173,7 @@ int run_classify_predict(int argc, char** argv)
   times.end("forest");
   times.move("forest", "forest loading", p.seconds_loading);
   if(las_output)
-    write_prediction_las(output, file, p, class_codes, settings.features.threads);
+    write_prediction_las(output, las_output_points(in), file, p, class_codes, settings.features.threads);
   else
     write_prediction_ply(output, file, p, settings.labels, in.first, in.last);
   times.end("writing");

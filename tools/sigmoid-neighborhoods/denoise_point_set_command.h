@@ -146,7 +146,7 @@ inline void write_denoised_las(const std::string& path, const std::string& input
     for(int c = 0; c < 3; ++c)
       SN::store_las_extra(record, l, std::size_t(c), normals[i][c]);
   };
-  write_las_results(path, input, denoised, r, threads);
+  write_las_results(path, Las_output_points{input}, denoised, r, threads);
 }
 
 inline int run_denoise_point_set(int argc, char** argv)

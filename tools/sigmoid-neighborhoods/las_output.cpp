@@ -5,6 +5,7 @@
 
 #include "las_output.h"
 
+#include "catalog_input.h"
 #include "command_line.h"
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
@@ -37,9 +38,23 @@ bool is_las_output(const std::string& path)
 
 void refuse_las_output_of_catalog(const Arguments& args, const std::string& command)
 {
-  if(args.has("--catalog") && is_las_output(args.output()))
-    throw Usage_error(command + " --catalog: LAS output of a catalog or its tiles is not written yet; write this "
-                                "command's other output, or give the tile's file as INPUT");
+  if(args.has("--catalog") && !args.has("--tile") && is_las_output(args.output()))
+    throw Usage_error(command + " --catalog: a LAS output of the catalog's union would mix the records of " +
+                      "several files: write one per tile (--tile NAME), or this command's other output");
+}
+
+Las_output_points las_output_points(const Input_points& in)
+{
+  Las_output_points points;
+  points.source = in.source;
+  if(in.is_tile)
+  {
+    points.first = in.first;
+    points.last = in.last;
+    if(!in.halo.point_of_record.empty())
+      points.point_of_record = &in.halo.point_of_record;
+  }
+  return points;
 }
 
 namespace {
@@ -47,14 +62,15 @@ namespace {
 // One record per point, point format 6: the coordinates at the layout's scale, return 1 of 1, the
 // point's label as its classification when it fits (0 to 255), the rest zero.
 template <typename Writer>
-void write_new_records(Writer& writer, const SN::Oriented_point_set& model, const Las_results& results)
+void write_new_records(Writer& writer, const SN::Oriented_point_set& model, std::size_t begin, std::size_t end,
+                       const Las_results& results)
 {
   const SN::Las_output_layout& l = writer.layout();
   constexpr std::size_t BLOCK = 65536;
   std::vector<unsigned char> block;
-  for(std::size_t first = 0; first < model.points.size(); first += BLOCK)
+  for(std::size_t first = begin; first < end; first += BLOCK)
   {
-    const std::size_t count = (std::min)(BLOCK, model.points.size() - first);
+    const std::size_t count = (std::min)(BLOCK, end - first);
     block.assign(count * l.record_length, 0);
     for(std::size_t i = 0; i < count; ++i)
     {
@@ -70,13 +86,17 @@ void write_new_records(Writer& writer, const SN::Oriented_point_set& model, cons
   }
 }
 
-// The records of the LAS or LAZ file `source`, each completed with its point's values.
+// The records of the LAS or LAZ file `points.source`, each completed with its point's values.
 template <typename Writer>
-void write_copied_records(Writer& writer, const std::string& source, const SN::Oriented_point_set& model,
+void write_copied_records(Writer& writer, const Las_output_points& points, const SN::Oriented_point_set& model,
                           const Las_results& results, unsigned int threads)
 {
   const SN::Las_output_layout& l = writer.layout();
-  const std::size_t inputs = model.point_of_input.empty() ? model.points.size() : model.point_of_input.size();
+  const std::string& source = points.source;
+  const std::vector<std::size_t>* point_of = points.point_of_record != nullptr ? points.point_of_record
+                                             : model.point_of_input.empty()    ? nullptr
+                                                                               : &model.point_of_input;
+  const std::size_t inputs = point_of != nullptr ? point_of->size() : model.points.size();
   std::vector<unsigned char> block;
   std::size_t records = 0;
   const SN::Las_header h = SN::read_las_records(
@@ -89,7 +109,7 @@ void write_copied_records(Writer& writer, const std::string& source, const SN::O
       {
         unsigned char* record = block.data() + i * l.record_length;
         std::memcpy(record, input + i * l.copied_record_length, l.copied_record_length);
-        const std::size_t point = model.point_of_input.empty() ? first + i : model.point_of_input[first + i];
+        const std::size_t point = point_of != nullptr ? (*point_of)[first + i] : first + i;
         results.complete(record, l, point);
       }
       writer.write(block.data(), count);
@@ -103,9 +123,10 @@ void write_copied_records(Writer& writer, const std::string& source, const SN::O
 
 } // namespace
 
-void write_las_results(const std::string& path, const std::string& source, const SN::Oriented_point_set& model,
+void write_las_results(const std::string& path, const Las_output_points& points, const SN::Oriented_point_set& model,
                        const Las_results& results, unsigned int threads)
 {
+  const std::string& source = points.source;
   const std::string ext = SN::lower_case_extension(source);
   errno = 0;
   try
@@ -132,18 +153,21 @@ void write_las_results(const std::string& path, const std::string& source, const
         if(ext == "las" || ext == "laz")
         {
           write(out, SN::las_output_layout_like(source, results.dimensions),
-                [&](auto& writer) { write_copied_records(writer, source, model, results, threads); });
+                [&](auto& writer) { write_copied_records(writer, points, model, results, threads); });
           return;
         }
+        const std::size_t first = (std::min)(points.first, model.points.size());
+        const std::size_t last = (std::max)(first, (std::min)(points.last, model.points.size()));
         std::array<double, 3> min{{0., 0., 0.}}, max{{0., 0., 0.}};
-        if(!model.points.empty())
+        if(first < last)
         {
-          const CGAL::Bbox_3 box = CGAL::bbox_3(model.points.begin(), model.points.end());
+          const CGAL::Bbox_3 box = CGAL::bbox_3(model.points.begin() + std::ptrdiff_t(first),
+                                                model.points.begin() + std::ptrdiff_t(last));
           min = {{box.xmin(), box.ymin(), box.zmin()}};
           max = {{box.xmax(), box.ymax(), box.zmax()}};
         }
         write(out, SN::las_output_layout_for(min, max, results.dimensions),
-              [&](auto& writer) { write_new_records(writer, model, results); });
+              [&](auto& writer) { write_new_records(writer, model, first, last, results); });
       },
       true);
   }

@@ -19,12 +19,28 @@
 namespace sigmoid_tool {
 
 class Arguments;
+struct Input_points;
 
 // Whether `path` names a LAS output: .las, or .laz for the same compressed as LASzip does.
 bool is_las_output(const std::string& path);
 
-// Refuses a LAS output of a catalog (its tiles' records would come from several files).
+// Refuses a LAS output of a catalog's union (its records would come from several files); a tile's
+// (--tile) is its file's records.
 void refuse_las_output_of_catalog(const Arguments& args, const std::string& command);
+
+// The records of a LAS output: those of `source` when it is a LAS or LAZ file, each with the results
+// of its point (`point_of_record`, else the model's point_of_input when something was merged, else the
+// record's own index), else new records of the model's points `first` ... `last - 1`.
+struct Las_output_points
+{
+  std::string source;
+  std::size_t first = 0, last = std::size_t(-1);
+  const std::vector<std::size_t>* point_of_record = nullptr;
+};
+
+// The records of a LAS output of `in`: its file's, or a tile's file's with the results of their points
+// in the tile with its halo (a seam duplicate: the earlier tile's point it was merged into).
+Las_output_points las_output_points(const Input_points& in);
 
 // What a command adds to each record: its dimensions, and the values of one point.
 struct Las_results
@@ -37,10 +53,9 @@ struct Las_results
     complete;
 };
 
-// Writes `path` atomically: the records of `source` (LAS or LAZ, decoded on `threads`) with `results`,
-// or one record per point of `model` when `source` is another format; compressed on `threads` when
-// `path` ends in .laz. Any failure is a Usage_error.
-void write_las_results(const std::string& path, const std::string& source,
+// Writes `path` atomically: the records of `points` (a LAS or LAZ source decoded on `threads`) with
+// `results`; compressed on `threads` when `path` ends in .laz. Any failure is a Usage_error.
+void write_las_results(const std::string& path, const Las_output_points& points,
                        const CGAL::Sigmoid_neighborhoods::Oriented_point_set& model, const Las_results& results,
                        unsigned int threads);
 

@@ -132,6 +132,7 @@ inline std::vector<SN::Optimal_sigmoid_neighborhood> optimal_search(const SN::Or
   return records;
 }
 
+
 const char* const OPTIMAL_CSV_HEADER =
   "x,y,z,nx,ny,nz,a,b,k,error,linearity,planarity,scattering,label,error_equal,k_equal";
 
@@ -211,7 +212,7 @@ inline void write_optimal_ply(std::ostream& out, const SN::Oriented_point_set& m
 // The CSV's columns as extra bytes dimensions of the input's records (las_output.h): normals and
 // the values float (single precision, as the viewers read them), k, label and k_equal integers of
 // the fewest bytes that hold --k-max.
-inline void write_optimal_las(const std::string& path, const std::string& source, const SN::Oriented_point_set& model,
+inline void write_optimal_las(const std::string& path, const Las_output_points& points, const SN::Oriented_point_set& model,
                               const std::vector<SN::Optimal_sigmoid_neighborhood>& records, const Search_options& o)
 {
   typedef SN::Las_extra_bytes_type Type;
@@ -242,7 +243,7 @@ inline void write_optimal_las(const std::string& path, const std::string& source
     for(std::size_t j = 0; j < l.added.size(); ++j)
       SN::store_las_extra(record, l, j, values[j]);
   };
-  write_las_results(path, source, model, r, o.threads);
+  write_las_results(path, points, model, r, o.threads);
 }
 
 inline int run_optimal(int argc, char** argv)
@@ -288,7 +289,7 @@ inline int run_optimal(int argc, char** argv)
     failures += records[i].is_failure();
 
   if(las_output)
-    write_optimal_las(csv, in.source, model, records, options);
+    write_optimal_las(csv, las_output_points(in), model, records, options);
   else
     write_file_atomically(csv, [&](std::ofstream& out) {
       write_optimal_csv(out, model, records, options.threads, in.first, in.last);

@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
@@ -33,6 +34,11 @@ struct Tile_with_halo
   unsigned int readings = 0;      ///< the halos read until one held every neighborhood
   std::size_t seam_duplicates = 0; ///< the tile's points merged into an earlier tile's point at their position
   std::size_t input_points = 0;    ///< the points of the tile's file (LAS: its records), before any merge
+  /// for a LAS or LAZ tile, each record of its file, in the file's order: its point in `points` (one of
+  /// the tile's own, or the earlier tile's point that a seam duplicate was merged into), so that a
+  /// copy of the file's records can carry the results of their points; empty for other formats and
+  /// for a tile without points of its own
+  std::vector<std::size_t> point_of_record;
   /// the records of the tile's points are those of the union, bit for bit: every orientation but
   /// `Normal_orientation::SPANNING_FOREST`, whose forest crosses the tiles' seams
   bool exact = true;

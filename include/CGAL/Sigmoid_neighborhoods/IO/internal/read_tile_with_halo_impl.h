@@ -241,18 +241,23 @@ read_tile_with_halo(const Tile_catalog& catalog, std::size_t tile, unsigned int 
     const Oriented_point_set& s = read.set;
     const internal::Unread_space unread(catalog, region);
 
-    // the rows the records read: the tile's points' (k), and those of their normals (the estimation's)
+    // the rows the records read: the tile's points' (k), those of the earlier tiles' points that its
+    // seam duplicates were merged into (their records carry those points' results), and those of
+    // their normals (the estimation's)
     double largest = 0.;
     if(!unread.empty() && own_range.first < own_range.second)
     {
       std::vector<std::size_t> needed;
       for(std::size_t i = own_range.first; i < own_range.second; ++i)
         needed.push_back(i);
+      for(std::size_t r = read.tile_starts[tile]; r < read.tile_starts[tile + 1]; ++r)
+        if(read.merged.position_of[r] < own_range.first)
+          needed.push_back(read.merged.position_of[r]);
       largest = internal::largest_shortfall(s, needed, k, catalog, region);
       if(estimated && largest <= 0.)
       {
         std::vector<char> is_needed(s.points.size(), 0);
-        for(std::size_t i = own_range.first; i < own_range.second; ++i)
+        for(std::size_t i : needed)
         {
           is_needed[i] = 1;
           for(std::size_t r = s.neighbor_offsets[i]; r < s.neighbor_offsets[i] + k; ++r)
@@ -268,6 +273,10 @@ read_tile_with_halo(const Tile_catalog& catalog, std::size_t tile, unsigned int 
     if(largest <= 0.)
     {
       internal::finish_catalog_points(read, o);
+      const std::string extension = lower_case_extension(own.path);
+      if(extension == "las" || extension == "laz") // read whole, record by record: one point each before the merge
+        for(std::size_t r = read.tile_starts[tile]; r < read.tile_starts[tile + 1]; ++r)
+          result.point_of_record.push_back(read.merged.position_of[r]);
       result.points = std::move(read.set);
       result.first = own_range.first;
       result.last = own_range.second;
