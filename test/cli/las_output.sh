@@ -2,14 +2,16 @@
 # Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 # SPDX-License-Identifier: GPL-3.0-or-later
 #
-# LAS output (-o OUT.las) of optimal, classify predict and denoise, read by check_las_output.py (numpy alone):
+# LAS output (-o OUT.las) of optimal, classify predict, filter-normals and denoise, read by
+# check_las_output.py (numpy alone):
 # every record of the input as it was but the classification, the header's summary right, the
 # results as described extra bytes dimensions equal to the CSV's columns and the PLY's classes, on
 # the six IGN tiles and on the LAS and LAZ files of ../shared/data/laz (LAS 1.2 to 1.4, extra bytes,
 # EVLRs); a LAZ input gives the LAS twin's output byte for byte; an output read again by the tool
 # gives the input's results; a point set of another format gets format 6 records within half a
 # scale unit. LAZ output (-o OUT.laz), decompressed by the las_copy example: the LAS output byte for
-# byte, in fewer bytes. A catalog's tile (--tile) gets its file's records with the union's results. The refusals exit 2 with one line and write nothing.
+# byte, in fewer bytes. A catalog's tile (--tile) gets its file's records with the union's results.
+# The refusals exit 2 with one line and write nothing; a LAZ output of wave packets before the work.
 # usage: las_output.sh TOOL SHARED_DATA_FOLDER PYTHON CHECKER LAS_COPY
 set -eu
 tool=$1
@@ -110,6 +112,24 @@ normal_x = records[:, length - 12:length - 8].copy().view('<f4').reshape(-1)
 assert np.abs(normal_x - expected[:, 3]).max() < 1e-7
 " || fail "denoise: the LAS output's positions or normals"
 
+# filter-normals: the records as they were, the filtered normals as extra bytes (the XYZ output's)
+"$tool" filter-normals "$data/laz/simple.las" -o "$dir/f.xyz" --iterations 3 2> /dev/null || fail "filter-normals (XYZ)"
+"$tool" filter-normals "$data/laz/simple.las" -o "$dir/f.las" --iterations 3 2> /dev/null || fail "filter-normals (LAS)"
+"$python" "$checker" "$dir/f.las" "$data/laz/simple.las" > "$dir/names.txt" || fail "filter-normals: the LAS output"
+grep -q "^normal_x,normal_y,normal_z$" "$dir/names.txt" || fail "filter-normals: $(cat "$dir/names.txt")"
+for c in x y z; do
+  "$python" "$checker" "$dir/f.las" "$data/laz/simple.las" --values normal_$c > "$dir/f_$c.txt"
+done
+"$python" -c "
+import numpy as np
+expected = np.loadtxt('$dir/f.xyz')
+got = np.stack([np.loadtxt('$dir/f_%s.txt' % c) for c in 'xyz'], axis=1)
+assert got.shape == expected[:, 3:].shape and np.abs(got - expected[:, 3:]).max() < 1e-7
+" || fail "filter-normals: the LAS output's normals are not the XYZ output's"
+"$tool" filter-normals "$data/laz/simple.las" -o "$dir/f.laz" --iterations 3 2> /dev/null || fail "filter-normals (LAZ)"
+"$las_copy" "$dir/f.laz" "$dir/f.unzipped.las" > /dev/null || fail "filter-normals: LAZ unread"
+cmp "$dir/f.las" "$dir/f.unzipped.las" || fail "filter-normals: the LAZ output is not the LAS output"
+
 # a point set of another format: new records, coordinates within half a unit of the scale
 "$python" -c "
 import numpy as np
@@ -158,6 +178,24 @@ done
 
 # refusals
 expect_refusal "LAS output of the catalog's union" "$tool" optimal --catalog "$data/laz" -o "$dir/x.laz" $search
+# a LAZ output of records with wave packets: refused before the work (point format 10: 8 and 29 wave bytes)
+"$python" - "$data/labeled/ign_lidarhd_77050_627755.las" "$dir/wave.las" << 'EOF'
+import struct, sys
+d = open(sys.argv[1], "rb").read()
+offset, n = struct.unpack_from("<I", d, 96)[0], 200
+header = bytearray(d[:offset])
+header[104] = 10
+struct.pack_into("<H", header, 105, 38 + 29)
+struct.pack_into("<Q", header, 247, n)
+struct.pack_into("<15Q", header, 255, n, *([0] * 14))
+records = b"".join(d[offset + 38 * i:offset + 38 * (i + 1)] + bytes(29) for i in range(n))
+open(sys.argv[2], "wb").write(bytes(header) + records)
+EOF
+for command in optimal filter-normals denoise; do
+  expect_refusal "the wave packets of point format 10 of $dir/wave.las are not compressed" \
+    "$tool" $command "$dir/wave.las" -o "$dir/x.laz"
+  ! grep -q "sweep\|failures" "$dir/err.txt" || fail "$command: the refusal came after the work: $(cat "$dir/err.txt")"
+done
 expect_refusal "of 31 at most" "$tool" classify predict "$dir/model.bin" "$data/laz/simple.las" -o "$dir/x.las" \
   --class-codes ground=40
 expect_refusal "is not NAME=CODE" "$tool" classify predict "$dir/model.bin" "$data/laz/simple.las" -o "$dir/x.las" \

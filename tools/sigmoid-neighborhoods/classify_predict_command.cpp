@@ -160,6 +160,8 @@ int run_classify_predict(int argc, char** argv)
     minimum_halo = std::max(needed, 1.5 * in.halo.halo_width);
   }
   in.halo.readings = readings;
+  if(las_output)
+    check_las_output(output, las_output_points(in));
   times.end_reading(in.model);
   if(in.is_tile && in.first == in.last)
     throw Usage_error(in.source + ": tile " + in.tile_name + " has no point of its own (empty, or all on an earlier "

@@ -135,16 +135,12 @@ inline void check_denoising_arguments(const Arguments& args)
 inline void write_denoised_las(const std::string& path, const std::string& input, const SN::Oriented_point_set& denoised,
                                const std::vector<SN::Oriented_point_set::Vector_3>& normals, unsigned int threads)
 {
-  typedef SN::Las_extra_bytes_type Type;
-  Las_results r;
-  r.dimensions = {{"normal_x", "filtered unit normal, x", Type::FLOAT},
-                  {"normal_y", "filtered unit normal, y", Type::FLOAT},
-                  {"normal_z", "filtered unit normal, z", Type::FLOAT}};
-  r.complete = [&](unsigned char* record, const SN::Las_output_layout& l, std::size_t i) {
+  Las_results r = filtered_normal_results(normals);
+  r.complete = [&denoised, store_normals = r.complete](unsigned char* record, const SN::Las_output_layout& l,
+                                                       std::size_t i) {
     const auto& p = denoised.points[i];
     SN::store_las_coordinates(record, l, {{p.x(), p.y(), p.z()}});
-    for(int c = 0; c < 3; ++c)
-      SN::store_las_extra(record, l, std::size_t(c), normals[i][c]);
+    store_normals(record, l, i);
   };
   write_las_results(path, Las_output_points{input}, denoised, r, threads);
 }
@@ -174,6 +170,7 @@ inline int run_denoise_point_set(int argc, char** argv)
   const Filter_options options = read_filter_options(args);
   check_denoising_arguments(args);
   const SN::Normal_options normal_options = read_normal_options(args);
+  check_las_output(output, Las_output_points{input});
   const Iteration_progress progress(input);
 
   Phase_times times;

@@ -8,6 +8,7 @@
 #define SIGMOID_NEIGHBORHOODS_TOOL_FILTER_COMMAND_H
 
 #include "command_line.h"
+#include "las_output.h"
 #include "optimal_command.h"
 #include "phase_times.h"
 #include "ply_output.h"
@@ -30,8 +31,11 @@ inline const char* FILTER_USAGE =
   "usage: sigmoid-neighborhoods filter-normals INPUT -o OUTPUT [--adaptive] [--iterations 50] [--cut-off 0.9]\n"
   "         [--eigenvalue-threshold 0.25] [--damping 3] [--radius R] [--size-range 10]\n"
   "         [--angle-tolerance 1e-6] [--threads N] [normals]\n"
-  "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply; normals estimated when absent)\n"
-  "  OUTPUT: .xyz or .pwn (x y z nx ny nz, 17 significant digits) or .ply (binary point cloud with normals)\n"
+  "  INPUT: a mesh (.off .obj .ply .stl) or a point set (.xyz .pwn .ply .las .laz; normals estimated when\n"
+  "      absent)\n"
+  "  OUTPUT: .xyz or .pwn (x y z nx ny nz, 17 significant digits), .ply (binary point cloud with normals),\n"
+  "      .las (LAS 1.4: a LAS/LAZ input's records untouched, format 6 for other inputs, with the filtered\n"
+  "      normal as extra bytes dimensions normal_x/y/z, float) or .laz (the same compressed)\n"
   "  --radius: the ball radius of the neighborhoods (default 5 times the mean distance to 12 neighbors)\n"
   "  --adaptive: every point picks its k in {k_i - R, ..., k_i + R} (R = --size-range) of least E_dim\n"
   "              with the cut-off weights, in every sweep (SPEC §7)\n";
@@ -103,6 +107,22 @@ inline void write_filtered_xyz(std::ostream& out, const SN::Oriented_point_set& 
   });
 }
 
+// The filtered normals as LAS extra bytes dimensions (las_output.h), after whatever else `complete`
+// writes into a record (denoise: the moved coordinates).
+inline Las_results filtered_normal_results(const std::vector<SN::Oriented_point_set::Vector_3>& normals)
+{
+  typedef SN::Las_extra_bytes_type Type;
+  Las_results r;
+  r.dimensions = {{"normal_x", "filtered unit normal, x", Type::FLOAT},
+                  {"normal_y", "filtered unit normal, y", Type::FLOAT},
+                  {"normal_z", "filtered unit normal, z", Type::FLOAT}};
+  r.complete = [&normals](unsigned char* record, const SN::Las_output_layout& l, std::size_t i) {
+    for(int c = 0; c < 3; ++c)
+      SN::store_las_extra(record, l, std::size_t(c), normals[i][c]);
+  };
+  return r;
+}
+
 // Positions and the filtered normals only: the filter has no per-point value to show.
 inline void write_filtered_ply(std::ostream& out, const SN::Oriented_point_set& model,
                                const std::vector<SN::Oriented_point_set::Vector_3>& normals)
@@ -125,15 +145,17 @@ inline int run_filter_normals(int argc, char** argv)
     std::cout << NORMAL_USAGE;
     return EXIT_OK;
   }
-  const auto input_and_output = one_input_and_output(args, "filter-normals", "OUTPUT (.xyz, .pwn or .ply)");
+  const auto input_and_output =
+    one_input_and_output(args, "filter-normals", "OUTPUT (.xyz, .pwn, .ply, .las or .laz)");
   const std::string& input = input_and_output.first;
   const std::string& output = input_and_output.second;
   const std::string ext = SN::lower_case_extension(output);
-  if(ext != "xyz" && ext != "pwn" && ext != "ply")
+  if(ext != "xyz" && ext != "pwn" && ext != "ply" && !is_las_output(output))
     throw Usage_error("unknown output format '" + (ext.empty() ? std::string("(no extension)") : "." + ext) +
-                      "': expected .xyz, .pwn or .ply");
+                      "': expected .xyz, .pwn, .ply, .las or .laz");
   const Filter_options options = read_filter_options(args);
   const SN::Normal_options normal_options = read_normal_options(args);
+  check_las_output(output, Las_output_points{input});
 
   Phase_times times;
   const SN::Oriented_point_set model =
@@ -151,7 +173,9 @@ inline int run_filter_normals(int argc, char** argv)
   }
   times.end("filter");
 
-  if(ext == "ply")
+  if(is_las_output(output))
+    write_las_results(output, Las_output_points{input}, model, filtered_normal_results(normals), options.threads);
+  else if(ext == "ply")
     write_file_atomically(output, [&](std::ofstream& out) { write_filtered_ply(out, model, normals); }, true);
   else
     write_file_atomically(output, [&](std::ofstream& out) { write_filtered_xyz(out, model, normals, options.threads); });

@@ -57,6 +57,25 @@ Las_output_points las_output_points(const Input_points& in)
   return points;
 }
 
+void check_las_output(const std::string& path, const Las_output_points& points)
+{
+  const std::string ext = SN::lower_case_extension(points.source);
+  if(SN::lower_case_extension(path) != "laz" || (ext != "las" && ext != "laz"))
+    return;
+  unsigned int format = 0;
+  try
+  {
+    format = SN::read_las_header(points.source).point_format;
+  }
+  catch(const SN::Input_error&)
+  {
+    return; // reading the input says what is wrong with it
+  }
+  if(format == 4 || format == 5 || format == 9 || format == 10)
+    throw Usage_error("cannot write " + path + ": LAZ: the wave packets of point format " + std::to_string(format) +
+                      " of " + points.source + " are not compressed (write the file as LAS)");
+}
+
 namespace {
 
 // One record per point, point format 6: the coordinates at the layout's scale, return 1 of 1, the

@@ -53,6 +53,10 @@ struct Las_results
     complete;
 };
 
+// Refuses, before the work, what write_las_results() would refuse of these records: a LAZ output of a
+// LAS or LAZ file whose records hold wave packets (point formats 4, 5, 9, 10).
+void check_las_output(const std::string& path, const Las_output_points& points);
+
 // Writes `path` atomically: the records of `points` (a LAS or LAZ source decoded on `threads`) with
 // `results`; compressed on `threads` when `path` ends in .laz. Any failure is a Usage_error.
 void write_las_results(const std::string& path, const Las_output_points& points,

@@ -41,7 +41,9 @@ inline const char* OPTIMAL_USAGE =
   "      absent)\n"
   "  -o OUT.las: LAS 1.4, the input's LAS/LAZ records untouched (format 6 for other inputs) with the CSV's\n"
   "      columns as extra bytes dimensions (normal_x/y/z, a, b, error... float; k, label, k_equal integers);\n"
-  "      OUT.laz: the same compressed as LASzip does (point formats 0-3 and 6-8)\n"
+  "      OUT.laz: the same compressed as LASzip does (point formats 0-3 and 6-8); of a catalog's tile\n"
+  "      (--tile NAME), its file's records (a seam duplicate's: the results of the earlier tile's point it\n"
+  "      was merged into); of a catalog's union, refused\n"
   "  --ply: a binary PLY point cloud: the CSV's columns as properties scalar_<column> (CloudCompare's\n"
   "      scalar fields), quality = error and red green blue (MeshLab)\n"
   "  --criterion: what the search minimises, E_dim (dimensionality, the default) or the eigenentropy\n"
@@ -278,6 +280,8 @@ inline int run_optimal(int argc, char** argv)
 
   Phase_times times;
   const Input_points in = read_input_points(args, "optimal", options.k_max, normal_options);
+  if(las_output)
+    check_las_output(csv, las_output_points(in));
   times.end_reading(in.model);
   const SN::Oriented_point_set& model = in.model;
   // a tile without points of its own (empty, or all on an earlier tile's seam) has no rows
