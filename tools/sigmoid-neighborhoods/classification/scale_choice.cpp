@@ -21,7 +21,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <random>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,12 +60,58 @@ Feature_options with_first_scale(Feature_options o, double first)
 
 namespace {
 
-// A file of the choice: its points with their normals and neighbor rows, each point's class and fold.
+// A file of the choice: its points with their normals (and neighbor rows until its groups without
+// scales in metres are computed), each point's class and fold; the points that a forest trains on or
+// predicts (`selected`), and those groups' columns at these points alone, computed once for every
+// candidate scale (their rows, up to 100 neighbors a point, are then freed).
 struct Fold_file
 {
   Featured_file file;
   std::vector<unsigned char> fold;
+  std::vector<std::size_t> selected;
+  std::map<std::string, std::vector<Feature_column>> fixed_groups; // at the selected points
 };
+
+// `columns` at the points `selected` alone.
+std::vector<Feature_column> at_points(std::vector<Feature_column> columns, const std::vector<std::size_t>& selected)
+{
+  for(Feature_column& c : columns)
+  {
+    std::vector<double> values(selected.size());
+    for(std::size_t i = 0; i < selected.size(); ++i)
+      values[i] = c.values[selected[i]];
+    c.values = std::move(values);
+  }
+  return columns;
+}
+
+// The columns of the groups of `o` on `f` at its selected points, in the order the groups give
+// them (a column that an earlier group gave kept once, as compute_feature_columns() gives the set):
+// those with scales in metres computed here, the others as computed before.
+std::vector<Feature_column> selected_columns(const Fold_file& f, const Feature_options& o, double first)
+{
+  std::vector<Feature_column> columns;
+  std::set<std::string> names;
+  for(const Feature_group* g : groups_of(o))
+  {
+    std::vector<Feature_column> group;
+    if(g->metric_scales)
+    {
+      Feature_options one = o;
+      one.groups = {g->name};
+      group = at_points(compute_feature_columns(f.file.model, one, [&](const std::string& step) {
+                          progress(f.file.path + ": scale " + number17(first) + " m: " + step);
+                        }),
+                        f.selected);
+    }
+    else
+      group = f.fixed_groups.at(g->name);
+    for(Feature_column& c : group)
+      if(names.insert(c.name).second)
+        columns.push_back(std::move(c));
+  }
+  return columns;
+}
 
 // The fold of a point: the parity of its block in a checkerboard of 4 x 4 blocks over `extent`.
 unsigned char fold_of(const SN::Oriented_point_set::Point_3& p, const CGAL::Bbox_2& extent)
@@ -210,6 +258,47 @@ Scale_choice_report choose_first_scale(const std::vector<std::string>& paths, co
     test_truth[fold] = training_truth(files, fold, classes, 0);
     keep_evenly(test_truth[fold], TEST_POINTS_PER_FOLD);
   }
+  // Each file's points that a forest reads, their truth at those points alone, and the groups that
+  // no candidate changes computed there once; then the neighbor rows, which only those groups read,
+  // are freed: the choice holds the selected points' columns, not every point's rows.
+  typedef std::array<std::vector<std::vector<int>>, 2> Truth;
+  Feature_options fixed = s.features;
+  fixed.groups.clear();
+  for(const Feature_group* g : groups_of(s.features))
+    if(!g->metric_scales)
+      fixed.groups.push_back(g->name);
+  auto select = [&](std::vector<Fold_file>& set, const std::vector<Truth*>& truths) {
+    for(std::size_t i = 0; i < set.size(); ++i)
+    {
+      Fold_file& f = set[i];
+      for(std::size_t p = 0; p < f.file.truth.size(); ++p)
+        if(std::any_of(truths.begin(), truths.end(), [&](const Truth* t) {
+             return (*t)[0][i][p] >= 0 || (*t)[1][i][p] >= 0;
+           }))
+          f.selected.push_back(p);
+      for(Truth* t : truths)
+        for(std::vector<std::vector<int>>& fold : *t)
+        {
+          std::vector<int> kept(f.selected.size());
+          for(std::size_t j = 0; j < f.selected.size(); ++j)
+            kept[j] = fold[i][f.selected[j]];
+          fold[i] = std::move(kept);
+        }
+      for(const Feature_group* g : groups_of(fixed))
+      {
+        Feature_options one = fixed;
+        one.groups = {g->name};
+        f.fixed_groups[g->name] = at_points(compute_feature_columns(f.file.model, one, [&](const std::string& step) {
+                                              progress(f.file.path + ": " + step);
+                                            }),
+                                            f.selected);
+      }
+      std::vector<std::uint32_t>().swap(f.file.model.neighbor_indices);
+      std::vector<std::size_t>().swap(f.file.model.neighbor_offsets);
+    }
+  };
+  select(files, {&train_truth, &test_truth});
+  select(thinned, {&thinned_truth});
 
   Scale_choice_report report;
   report.ladder = scale_ladder();
@@ -220,14 +309,10 @@ Scale_choice_report choose_first_scale(const std::vector<std::string>& paths, co
     std::array<Training_rows, 2> train, test, thin;
     std::vector<std::string> names;
     // each file's features computed once, its rows appended to every set of rows that takes them
-    typedef std::array<std::vector<std::vector<int>>, 2> Truth;
     auto append = [&](const std::vector<Fold_file>& set, const std::vector<std::pair<const Truth*, std::array<Training_rows, 2>*>>& targets) {
       for(std::size_t i = 0; i < set.size(); ++i)
       {
-        const std::vector<Feature_column> columns = compute_feature_columns(
-          set[i].file.model, o, [&](const std::string& step) {
-            progress(set[i].file.path + ": scale " + number17(first) + " m: " + step);
-          });
+        const std::vector<Feature_column> columns = selected_columns(set[i], o, first);
         if(names.empty())
           names = column_names(columns);
         for(const auto& target : targets)
