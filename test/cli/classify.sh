@@ -97,6 +97,24 @@ for voxel in 0.5 1; do
 done
 tail -n +3 "$dir/voxel0.5.bin" > "$dir/forest0.5"; tail -n +3 "$dir/voxel1.bin" > "$dir/forest1"
 ! cmp -s "$dir/forest0.5" "$dir/forest1" || fail "the forests of two voxels are the same: the voxel is not read"
+# by default the scales in metres are chosen wherever a group has them and none is given; given, not
+# chosen; where the files cannot tell them apart (points on the diagonal of the checkerboard: one
+# fold), 0.5 m, said on the summary line, and with --choose-scales a refusal
+"$tool" classify train "$b9" -o "$dir/default_metric.bin" --labels $labels --features cgal-metric --cgal-scales 2 \
+  --trees 2 2> "$dir/default_metric.txt" || fail "train cgal-metric: $(cat "$dir/default_metric.txt")"
+grep -q "first scale in metres chosen: " "$dir/default_metric.txt" || fail "no choice by default: $(cat "$dir/default_metric.txt")"
+sed -n 2p "$dir/default_metric.bin" | grep -q '"scale_choice":' || fail "no choice in the default model"
+! grep -q "first scale in metres" "$dir/voxel.txt" || fail "a given voxel was chosen again: $(cat "$dir/voxel.txt")"
+! sed -n 2p "$dir/voxel1.bin" | grep -q '"scale_choice":' || fail "a choice in a model of a given voxel"
+printf 'ply\nformat ascii 1.0\nelement vertex 60\nproperty float x\nproperty float y\nproperty float z\nproperty int label\nend_header\n' > "$dir/diagonal.ply"
+i=0; while [ $i -lt 60 ]; do echo "$i $i $((i % 4)) $((i % 3))" >> "$dir/diagonal.ply"; i=$((i + 1)); done
+"$tool" classify train "$dir/diagonal.ply" -o "$dir/diagonal.bin" --labels $labels --features cgal-metric --trees 2 \
+  2> "$dir/diagonal.txt" || fail "train on one fold: $(cat "$dir/diagonal.txt")"
+grep -q "first scale in metres not chosen (too few labeled points.*): 0.5 m" "$dir/diagonal.txt" ||
+  fail "no fallback: $(cat "$dir/diagonal.txt")"
+expect_refusal "too few labeled points to choose the scales in metres" "$tool" classify train "$dir/diagonal.ply" \
+  -o "$dir/none.bin" --labels $labels --features cgal-metric --choose-scales
+
 expect_refusal "not a cell size of the pyramid" "$tool" classify train "$b9" -o "$dir/bad_metric.bin" --labels $labels \
   --features pyramid-sigmoid --pyramid-cell 1 --pyramid-sigmoid-cells 3
 expect_refusal "must be a positive voxel size" "$tool" classify train "$b9" -o "$dir/bad_metric.bin" --labels $labels \

@@ -70,15 +70,33 @@ int run_classify_train(int argc, char** argv)
   if(t.settings.trees < 1 || t.settings.depth < 1)
     throw Usage_error("--trees and --depth must be at least 1");
   Phase_times times;
+  // The scales in metres are chosen on the training files unless given: explicitly with
+  // --choose-scales (refused where it cannot be made), else wherever a group has them (where the files
+  // cannot tell the scales apart, the fixed ones, said on the summary line).
+  const bool scales_given = args.has("--cgal-voxel") || args.has("--pyramid-cell");
   if(args.has("--choose-scales"))
   {
-    if(args.has("--cgal-voxel") || args.has("--pyramid-cell"))
+    if(scales_given)
       throw Usage_error("--choose-scales chooses --cgal-voxel and --pyramid-cell: give them or it");
     if(!has_metric_scales(t.settings.features))
       throw Usage_error("--choose-scales: no group of --features has scales in metres (cgal-metric, cgal-grid, "
                         "pyramid, pyramid-sigmoid)");
-    t.settings.scale_choice = choose_first_scale(args.positional(), t.settings);
-    t.settings.features = with_first_scale(t.settings.features, t.settings.scale_choice->chosen);
+  }
+  std::string unchosen;
+  if(!scales_given && has_metric_scales(t.settings.features))
+  {
+    try
+    {
+      t.settings.scale_choice = choose_first_scale(args.positional(), t.settings);
+      t.settings.features = with_first_scale(t.settings.features, t.settings.scale_choice->chosen);
+    }
+    catch(const Scale_choice_impossible& e)
+    {
+      if(args.has("--choose-scales"))
+        throw;
+      unchosen = std::string("; first scale in metres not chosen (") + e.what() + "): " +
+                 number17(t.settings.features.cgal_voxel) + " m";
+    }
     times.end("choice of scales");
   }
   const std::size_t points = train_file_by_file(args.positional(), t, times);
@@ -88,7 +106,7 @@ int run_classify_train(int argc, char** argv)
   std::cerr << output << ": " << t.settings.feature_names.size() << " features, " << t.settings.labels.names.size()
             << " classes, " << points << " points from " << args.positional().size() << " file(s)"
             << (t.training_points != points ? " (" + std::to_string(t.training_points) + " trained on)" : std::string())
-            << scale_choice_text(t.settings)
+            << scale_choice_text(t.settings) << unchosen
             << "; " << number_fixed(times.total(), 2) << " s (" << times.text() << ")\n";
   return EXIT_OK;
 }

@@ -32,13 +32,19 @@ Feature_options with_first_scale(Feature_options o, double first);
 // trees to rank the candidates, few enough that the choice costs a few plain trainings.
 constexpr std::size_t SCALE_CHOICE_CAP = 4000;
 
+// The training files cannot tell the scales apart: a fold of the checkerboard has no labeled point.
+struct Scale_choice_impossible : Usage_error
+{
+  using Usage_error::Usage_error;
+};
+
 // Chooses the first scale among scale_ladder() on the files `paths`, read with the settings `s`:
 // the points split in space into two folds (a checkerboard of 4 x 4 blocks over the files' extent),
 // a forest trained on the points of one fold (at most `cap` per class) predicts the other, at the
 // files' density and trained on a copy thinned 4x at random (its normals estimated again); a
 // candidate's score is the worse of the two pooled mean IoUs (a scale must hold at both densities),
 // the best score wins and ties go to the coarser scale (fewer cells to compute). A class missing from
-// a fold counts against every candidate alike. Throws Usage_error when a fold has no training point.
+// a fold counts against every candidate alike. Throws Scale_choice_impossible when a fold has no training point.
 Scale_choice_report choose_first_scale(const std::vector<std::string>& paths, const Classifier_settings& s,
                                        std::size_t cap = SCALE_CHOICE_CAP);
 
