@@ -52,6 +52,27 @@ def main():
         print("| %s | %s |" % (text, " | ".join(cells)))
         rows.append((text, chosen))
     print()
+    # the set as the choice of scales would choose it too: the best of the worse of the two densities'
+    # cross-validated scores at each set's chosen scale, then that set's score on the test files
+    print("| condition | set of the best cross-validated score | its score | its test mean IoU | the default's |")
+    print("|---|---|---:|---:|---:|")
+    for text, chosen in rows:
+        scores = {}
+        for key in ["D", "M", "MP", "MS"]:
+            c = chosen[key]["scale_choice"]
+            scores[key] = max(min(a, b) for a, b in zip(c["same_density"], c["thinned"]))
+        best = max(scores, key=lambda k: scores[k])
+        print("| %s | %s | %.3f | %.3f | %.3f |" % (text, best, scores[best], chosen[best]["mean_iou"]["mean"],
+                                                  chosen["D"]["mean_iou"]["mean"]))
+    print()
+    print("| condition | set | features + classification of all files, seconds | ratio to CGAL's generator |")
+    print("|---|---|---:|---:|")
+    for text, chosen in rows:
+        base = chosen["A"]["feature_seconds"] + chosen["A"]["classify_seconds_mean"]
+        for key in ["A", "D", "M", "MP", "MS"]:
+            t = chosen[key]["feature_seconds"] + chosen[key]["classify_seconds_mean"]
+            print("| %s | %s | %.1f | %.2f |" % (text, key, t, t / base))
+    print()
     print("| condition | class | CGAL's generator | default, chosen scale | difference |")
     print("|---|---|---:|---:|---:|")
     for text, chosen in rows:

@@ -28,8 +28,8 @@ namespace classification {
 const char* const CLASSIFY_USAGE =
   "usage: sigmoid-neighborhoods classify train FILE... -o MODEL [--labels MAP] [--features GROUPS]\n"
   "                                [--trees 25] [--depth 20] [--feature-order-seed N] [--max-per-class N]\n"
-  "                                [--pyramid-cell 0.5] [--pyramid-levels 5] [--pyramid-sigmoid-cells C,...]\n"
-  "                                [--sigmoid 30deg,60deg] [--scales 10,25,50,100] [--cgal-voxel 0.5]\n"
+  "                                [--pyramid-cell S] [--pyramid-levels 5] [--pyramid-sigmoid-cells C,...]\n"
+  "                                [--sigmoid 30deg,60deg] [--scales 10,25,50,100] [--cgal-voxel S]\n"
   "                                [--cgal-scales 5] [--choose-scales] [normals] [--threads N]\n"
   "       sigmoid-neighborhoods classify predict MODEL INPUT|--catalog SOURCE [--tile NAME] -o OUT.ply|OUT.las|OUT.laz\n"
   "                                [--graphcut STRENGTH] [--threads N]\n"
