@@ -324,8 +324,8 @@ Scale_choice_report choose_first_scale(const std::vector<std::string>& paths, co
     append(thinned, {{&thinned_truth, &thin}});
     for(std::size_t fold = 0; fold < 2; ++fold)
       if(train[fold].labels.empty() || thin[fold].labels.empty() || test[fold].labels.empty())
-        throw Scale_choice_impossible("too few labeled points to choose the scales in metres (a fold of the checkerboard is "
-                          "empty): give --cgal-voxel and --pyramid-cell");
+        throw Scale_choice_impossible("too few labeled points to choose the scales in metres (a fold of the "
+                                      "checkerboard is empty): give --cgal-voxel and --pyramid-cell");
     report.same_density.push_back(cross_validated(train, test, names.size(), s).mean_iou());
     report.thinned.push_back(cross_validated(thin, test, names.size(), s).mean_iou());
     report.training_points = train[0].labels.size() + train[1].labels.size();
