@@ -100,7 +100,7 @@ tail -n +3 "$dir/voxel0.5.bin" > "$dir/forest0.5"; tail -n +3 "$dir/voxel1.bin" 
 # by default the scales in metres are chosen wherever a group has them and none is given; given, not
 # chosen; where the files cannot tell them apart (points on the diagonal of the checkerboard: one
 # fold), 0.5 m, said on the summary line, and with --choose-scales a refusal
-"$tool" classify train "$b9" -o "$dir/default_metric.bin" --labels $labels --features cgal-metric --cgal-scales 2 \
+"$tool" classify train "$b9" -o "$dir/default_metric.bin" --labels $labels --features cgal-metric,pyramid \
   --trees 2 2> "$dir/default_metric.txt" || fail "train cgal-metric: $(cat "$dir/default_metric.txt")"
 grep -q "first scale in metres chosen: " "$dir/default_metric.txt" || fail "no choice by default: $(cat "$dir/default_metric.txt")"
 sed -n 2p "$dir/default_metric.bin" | grep -q '"scale_choice":' || fail "no choice in the default model"

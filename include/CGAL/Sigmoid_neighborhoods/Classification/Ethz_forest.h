@@ -221,15 +221,17 @@ public:
     {
       std::vector<float> sample, votes;
     };
+    // One float before the sample, 0: CGAL 5.5 leaves the feature of a node whose proposals all
+    // failed at -1, and its trees then read the value before the sample.
     internal::for_each_index<ConcurrencyTag>(
       n, internal::number_of_threads(np),
       [&] {
-        return Scratch{std::vector<float>(m_features, 0.f), std::vector<float>(m_labels, 0.f)};
+        return Scratch{std::vector<float>(m_features + 1, 0.f), std::vector<float>(m_labels, 0.f)};
       },
       [&](std::size_t i, Scratch& s) {
         for(std::size_t f = 0; f < m_features; ++f)
-          s.sample[f] = Feature_values::stored_value(double(value(i, f)));
-        m_forest->evaluate(s.sample.data(), s.votes.data());
+          s.sample[f + 1] = Feature_values::stored_value(double(value(i, f)));
+        m_forest->evaluate(s.sample.data() + 1, s.votes.data());
         float best_value = 0.f;
         for(std::size_t j = 0; j < m_labels; ++j)
         {
