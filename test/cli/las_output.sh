@@ -191,10 +191,10 @@ struct.pack_into("<15Q", header, 255, n, *([0] * 14))
 records = b"".join(d[offset + 38 * i:offset + 38 * (i + 1)] + bytes(29) for i in range(n))
 open(sys.argv[2], "wb").write(bytes(header) + records)
 EOF
+# (the message names the input: only the check before the work does; the writer's own refusal does not)
 for command in optimal filter-normals denoise; do
   expect_refusal "the wave packets of point format 10 of $dir/wave.las are not compressed" \
     "$tool" $command "$dir/wave.las" -o "$dir/x.laz"
-  ! grep -q "sweep\|failures" "$dir/err.txt" || fail "$command: the refusal came after the work: $(cat "$dir/err.txt")"
 done
 expect_refusal "of 31 at most" "$tool" classify predict "$dir/model.bin" "$data/laz/simple.las" -o "$dir/x.las" \
   --class-codes ground=40
