@@ -20,7 +20,8 @@ EVALUATE_PACKAGES = g++ make cmake ccache libcgal-dev libcgal-demo libeigen3-dev
                     nlohmann-json3-dev python3-matplotlib python3-numpy libtbb-dev
 # and for everything else (the tests, the manual, the Python module, the scale-out recipes)
 DEBIAN_PACKAGES = $(EVALUATE_PACKAGES) catch2 doxygen parallel \
-                  python3-dev python3-venv python3-setuptools python3-pytest pybind11-dev python3-pybind11
+                  python3-dev python3-venv python3-setuptools python3-pytest pybind11-dev python3-pybind11 \
+                  libnanoflann-dev
 # Only for `make test`: the viewer test opens the tool's PLY files in CloudCompare (headless); the
 # Python examples' tests use Open3D and scikit-learn.
 TEST_PACKAGES = cloudcompare python3-open3d python3-sklearn

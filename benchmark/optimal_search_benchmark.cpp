@@ -7,6 +7,8 @@
 //  (c) the package's optimal search, (d) the package's features for one fixed (a, b, k),
 //  (e) the equal-weights search (a_grid = b_grid = {pi}: the best k alone, Weinmann's optimal size),
 //  (f) the optimal search with the classification features at each optimum (compute_optimal_point_features()),
+//  (g) the peer: pgeof's optimal size (k = 6..20, float32) on nanoflann (pgeof_peer.h), where nanoflann is installed,
+//  (h) nanoflann's k-NN query on the same points (doubles) and k as the package's k-NN share,
 // and checks that (b) and (c) give the same (a*, b*, k*, E) on every point.
 //
 //   optimal_search_benchmark [--points N] [--threads T] [--data sphere|fandisk|scan|all]
@@ -31,6 +33,10 @@
 #include <boost/range/iterator_range.hpp>
 
 #include <Eigen/Core>
+
+#ifdef SN_BENCHMARK_HAS_NANOFLANN
+#include "pgeof_peer.h"
+#endif
 
 #include <malloc.h>
 #include <sys/resource.h>
@@ -353,6 +359,22 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
       np);
     return checksum;
   });
+#ifdef SN_BENCHMARK_HAS_NANOFLANN
+  // (g) the peer, from its float32 array as its users hand it (converted before the clock starts)
+  std::vector<std::array<double, 3>> coordinates;
+  for(const Point_3& p : data.points)
+    coordinates.push_back({{p.x(), p.y(), p.z()}});
+  const pgeof_peer::Peer_points peer_points(coordinates);
+  const Measure g = measure(repeat, [&] {
+    const std::vector<pgeof_peer::Result> r = pgeof_peer::optimal_features(peer_points, threads);
+    double checksum = 0.;
+    for(const pgeof_peer::Result& x : r)
+      checksum += x.k;
+    return checksum;
+  });
+  // (h) nanoflann's tree and its queries of the point and its 20 nearest, on the doubles
+  const Measure h = measure(repeat, [&] { return double(pgeof_peer::nanoflann_k_nearest(peer_points, 21, threads)); });
+#endif
   // (d) one fixed triple
   const Measure d = measure(repeat, [&] {
     std::vector<SN::Dimensionality_features> features;
@@ -406,11 +428,23 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
               f.seconds, 100. * (f.seconds / c.seconds - 1.));
   std::printf("  k-NN share of (c): %.1f %% (%.2f s for one 20-NN query per point)\n",
               100. * knn.seconds / c.seconds, knn.seconds);
+  std::string peer_ratios = " optimal_over_pgeof=nan equal_over_pgeof=nan knn_over_nanoflann=nan";
+#ifdef SN_BENCHMARK_HAS_NANOFLANN
+  std::printf("  (g) pgeof's optimal k = 6..20 on nanoflann (float32): %10.0f points/s (%.2f s), %.0f bytes/point\n",
+              rate(g), g.seconds, g.extra_bytes / double(n));
+  std::printf("  (h) nanoflann's 20-NN query (doubles): %.2f s; the package's %.2f s (%.2fx)\n", h.seconds,
+              knn.seconds, knn.seconds / h.seconds);
+  std::printf("  (c)/(g) %.2f, (e)/(g) %.2f\n", c.seconds / g.seconds, e.seconds / g.seconds);
+  peer_ratios = " optimal_over_pgeof=" + std::to_string(c.seconds / g.seconds) +
+                " equal_over_pgeof=" + std::to_string(e.seconds / g.seconds) +
+                " knn_over_nanoflann=" + std::to_string(knn.seconds / h.seconds);
+#endif
   std::printf("  input %.1f MB, (c) peak %.1f MB above it\n", input_bytes / 1e6, c.extra_bytes / 1e6);
   std::printf("summary: data=%s points=%zu threads=%d optimal_over_cgal_pca=%.2f equal_over_cgal_pca=%.2f "
-              "plain_over_optimal=%s identical=%s\n",
+              "plain_over_optimal=%s identical=%s%s\n",
               data.name.c_str(), n, threads, c.seconds / a.seconds, e.seconds / a.seconds,
-              with_plain ? std::to_string(b.seconds / c.seconds).c_str() : "nan", identical.c_str());
+              with_plain ? std::to_string(b.seconds / c.seconds).c_str() : "nan", identical.c_str(),
+              peer_ratios.c_str());
   std::fflush(stdout);
 }
 
