@@ -13,7 +13,8 @@
 //
 //   optimal_search_benchmark [--points N] [--threads T] [--data sphere|fandisk|scan|all]
 //                            [--fandisk FILE] [--scan FILE] [--skip-plain] [--repeat R]
-//                            [--order hilbert|random]
+//                            [--order hilbert|random] [--scan-order as-read|hilbert|random]
+//                            [--only a,c,d,e,f,g,h,knn]  (the others print 0 s)
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Classification/Local_eigen_analysis.h>
@@ -135,6 +136,21 @@ Data upsampled_fandisk(const std::string& file, std::size_t n)
 // The points in Hilbert order, as a scan or a mesh gives them: neighbors in space are mostly
 // neighbors in memory. Generated samples are otherwise in random order, where every query and every
 // neighbor is a cache miss once the points outgrow the cache.
+void shuffle(Data& d)
+{
+  std::vector<std::size_t> order(d.points.size());
+  for(std::size_t i = 0; i < order.size(); ++i)
+    order[i] = i;
+  std::shuffle(order.begin(), order.end(), std::mt19937_64(3));
+  Data shuffled{d.name, {}, {}, "random"};
+  for(std::size_t i : order)
+  {
+    shuffled.points.push_back(d.points[i]);
+    shuffled.normals.push_back(d.normals[i]);
+  }
+  d = std::move(shuffled);
+}
+
 void put_in_hilbert_order(Data& d)
 {
   std::vector<std::size_t> order(d.points.size());
@@ -306,6 +322,30 @@ Measure measure(int repeat, const std::function<double()>& work)
   return best;
 }
 
+// --only: the measurements to run (letters a, c, d, e, f, g, h and "knn"); empty: all
+std::string only_measurements;
+bool selected(const std::string& what)
+{
+  if(only_measurements.empty())
+    return true;
+  std::size_t start = 0;
+  while(start <= only_measurements.size())
+  {
+    const std::size_t comma = only_measurements.find(',', start);
+    const std::size_t end = comma == std::string::npos ? only_measurements.size() : comma;
+    if(only_measurements.compare(start, end - start, what) == 0)
+      return true;
+    start = end + 1;
+  }
+  return false;
+}
+
+// The measurement, or a zero one when --only leaves it out.
+Measure measure_if(const std::string& what, int repeat, const std::function<double()>& work)
+{
+  return selected(what) ? measure(repeat, work) : Measure{};
+}
+
 void run(const Data& data, int threads, bool with_plain, int repeat)
 {
   const std::size_t n = data.points.size();
@@ -318,7 +358,7 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
   const double input_bytes = double(n) * (sizeof(Point_3) + sizeof(Vector_3));
 
   // (a) CGAL's PCA features at k = 20 (Sequential: CGAL's parallel code needs TBB).
-  const Measure a = measure(repeat, [&] {
+  const Measure a = measure_if("a", repeat, [&] {
     typedef CGAL::Classification::Point_set_neighborhood<Kernel, std::vector<Point_3>,
                                                          CGAL::Identity_property_map<Point_3>> Neighborhood;
     Neighborhood neighborhood(data.points, CGAL::Identity_property_map<Point_3>(), CGAL::Sequential_tag());
@@ -327,7 +367,7 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
     return double(eigen.eigenvalue(0)[0]);
   });
   // the k-NN share: one query of k_max = 20 neighbors per point
-  const Measure knn = measure(repeat, [&] {
+  const Measure knn = measure_if("knn", repeat, [&] {
     std::vector<std::uint32_t> rows;
     std::vector<std::size_t> offsets;
     SN::compute_k_nearest_neighbors<CGAL::Parallel_tag>(data.points, 20, rows, offsets,
@@ -335,8 +375,8 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
     return double(rows.size());
   });
   // A search with `search_np`. The records are consumed as they come: the memory measured is the library's own.
-  auto measure_search = [&](const auto& search_np) {
-    return measure(repeat, [&] {
+  auto measure_search = [&](const std::string& what, const auto& search_np) {
+    return measure_if(what, repeat, [&] {
       double checksum = 0.;
       SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(
         indices, boost::make_function_output_iterator([&](const SN::Optimal_sigmoid_neighborhood& r) {
@@ -346,13 +386,13 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
     });
   };
   // (c) the optimal search
-  const Measure c = measure_search(np);
+  const Measure c = measure_search("c", np);
   // (e) equal weights only: the best k of SPEC §5 with a = b = pi
   const std::vector<double> pi{CGAL_PI};
   const auto equal_np = SN::parameters::a_grid(pi, SN::parameters::b_grid(pi, np));
-  const Measure e = measure_search(equal_np);
+  const Measure e = measure_search("e", equal_np);
   // (f) the optimal search and the point features at every optimum, in the search's pass
-  const Measure f = measure(repeat, [&] {
+  const Measure f = measure_if("f", repeat, [&] {
     double checksum = 0.;
     SN::compute_optimal_point_features<CGAL::Parallel_tag>(
       indices, boost::make_function_output_iterator([&](const SN::Point_features& p) { checksum += p.verticality; }),
@@ -365,7 +405,7 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
   for(const Point_3& p : data.points)
     coordinates.push_back({{p.x(), p.y(), p.z()}});
   const pgeof_peer::Peer_points peer_points(coordinates);
-  const Measure g = measure(repeat, [&] {
+  const Measure g = measure_if("g", repeat, [&] {
     const std::vector<pgeof_peer::Result> r = pgeof_peer::optimal_features(peer_points, threads);
     double checksum = 0.;
     for(const pgeof_peer::Result& x : r)
@@ -373,10 +413,10 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
     return checksum;
   });
   // (h) nanoflann's tree and its queries of the point and its 20 nearest, on the doubles
-  const Measure h = measure(repeat, [&] { return double(pgeof_peer::nanoflann_k_nearest(peer_points, 21, threads)); });
+  const Measure h = measure_if("h", repeat, [&] { return double(pgeof_peer::nanoflann_k_nearest(peer_points, 21, threads)); });
 #endif
   // (d) one fixed triple
-  const Measure d = measure(repeat, [&] {
+  const Measure d = measure_if("d", repeat, [&] {
     std::vector<SN::Dimensionality_features> features;
     features.reserve(n);
     SN::compute_sigmoid_features<CGAL::Parallel_tag>(indices, SN::Cosine_sigmoid(0., CGAL_PI / 3), 20,
@@ -419,6 +459,7 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
   std::printf("  (a) CGAL Local_eigen_analysis k=20: %10.0f points/s (%.2f s, sequential)\n", rate(a), a.seconds);
   if(with_plain)
     std::printf("  (b) plain loop, 420 triples:       %10.0f points/s (%.2f s)\n", rate(b), b.seconds);
+  std::printf("  vector instructions: %s\n", SN::vector_instructions_name(SN::vector_instructions()));
   std::printf("  (c) optimal search:                 %10.0f points/s (%.2f s), %.0f bytes/point above the input\n",
               rate(c), c.seconds, c.extra_bytes / double(n));
   std::printf("  (d) features, one (a, b, k):        %10.0f points/s (%.2f s)\n", rate(d), d.seconds);
@@ -430,14 +471,17 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
               100. * knn.seconds / c.seconds, knn.seconds);
   std::string peer_ratios = " optimal_over_pgeof=nan equal_over_pgeof=nan knn_over_nanoflann=nan";
 #ifdef SN_BENCHMARK_HAS_NANOFLANN
-  std::printf("  (g) pgeof's optimal k = 6..20 on nanoflann (float32): %10.0f points/s (%.2f s), %.0f bytes/point\n",
-              rate(g), g.seconds, g.extra_bytes / double(n));
-  std::printf("  (h) nanoflann's 20-NN query (doubles): %.2f s; the package's %.2f s (%.2fx)\n", h.seconds,
-              knn.seconds, knn.seconds / h.seconds);
-  std::printf("  (c)/(g) %.2f, (e)/(g) %.2f\n", c.seconds / g.seconds, e.seconds / g.seconds);
-  peer_ratios = " optimal_over_pgeof=" + std::to_string(c.seconds / g.seconds) +
-                " equal_over_pgeof=" + std::to_string(e.seconds / g.seconds) +
-                " knn_over_nanoflann=" + std::to_string(knn.seconds / h.seconds);
+  if(g.seconds > 0.)
+  {
+    std::printf("  (g) pgeof's optimal k = 6..20 on nanoflann (float32): %10.0f points/s (%.2f s), %.0f bytes/point\n",
+                rate(g), g.seconds, g.extra_bytes / double(n));
+    std::printf("  (h) nanoflann's 20-NN query (doubles): %.2f s; the package's %.2f s (%.2fx)\n", h.seconds,
+                knn.seconds, knn.seconds / h.seconds);
+    std::printf("  (c)/(g) %.2f, (e)/(g) %.2f\n", c.seconds / g.seconds, e.seconds / g.seconds);
+    peer_ratios = " optimal_over_pgeof=" + std::to_string(c.seconds / g.seconds) +
+                  " equal_over_pgeof=" + std::to_string(e.seconds / g.seconds) +
+                  " knn_over_nanoflann=" + std::to_string(knn.seconds / h.seconds);
+  }
 #endif
   std::printf("  input %.1f MB, (c) peak %.1f MB above it\n", input_bytes / 1e6, c.extra_bytes / 1e6);
   std::printf("summary: data=%s points=%zu threads=%d optimal_over_cgal_pca=%.2f equal_over_cgal_pca=%.2f "
@@ -460,6 +504,7 @@ int main(int argc, char** argv)
   bool with_plain = true;
   int repeat = 1;
   bool hilbert = true;
+  std::string scan_order = "as-read";
   for(int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -487,13 +532,22 @@ int main(int argc, char** argv)
         throw std::runtime_error("--order takes hilbert or random");
       hilbert = order == "hilbert";
     }
+    else if(arg == "--only")
+      only_measurements = next();
+    else if(arg == "--scan-order")
+    {
+      scan_order = next();
+      if(scan_order != "as-read" && scan_order != "hilbert" && scan_order != "random")
+        throw std::runtime_error("--scan-order takes as-read, hilbert or random");
+    }
     else if(arg == "--repeat")
       repeat = (std::max)(1, std::stoi(next()));
     else
     {
       std::cerr << "usage: " << argv[0]
                 << " [--points N] [--threads T] [--data sphere|fandisk|scan|all] [--fandisk FILE] [--scan FILE]"
-                   " [--skip-plain] [--repeat R] [--order hilbert|random]\n";
+                   " [--skip-plain] [--repeat R] [--order hilbert|random]"
+                   " [--scan-order as-read|hilbert|random] [--only a,c,d,e,f,g,h,knn]\n";
       return 2;
     }
   }
@@ -523,7 +577,11 @@ int main(int argc, char** argv)
   }
   if((which == "scan" || which == "all") && !scan_file.empty())
   {
-    const Data d = scan(scan_file);
+    Data d = scan(scan_file);
+    if(scan_order == "random")
+      shuffle(d);
+    else if(scan_order == "hilbert")
+      put_in_hilbert_order(d);
     for(int t : threads)
       run(d, t, with_plain, repeat);
   }

@@ -63,7 +63,7 @@ core = Pybind11Extension(
                    ("CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE", None), ("SIGMOID_NEIGHBORHOODS_VERSION", f'"{VERSION}"')],
     # the flags of the CMake build (Release): the same code as the C++ library's tests check
     # -frounding-math: CGAL's interval arithmetic (the exact predicates of the readers) needs it, as CGAL's CMake sets
-    extra_compile_args=["-O3", "-g0", "-fopenmp", "-frounding-math"],
+    extra_compile_args=["-O3", "-g0", "-fopenmp", "-frounding-math", "-Wno-psabi"],
     extra_link_args=["-fopenmp"],
     libraries=["gmp", "mpfr"],
     cxx_std=17,

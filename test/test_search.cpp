@@ -25,10 +25,12 @@
 #include <algorithm>
 #include <map>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <numeric>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -268,6 +270,38 @@ TEST_CASE("optimal search equals the plain loop over all 420 triples", "[optimal
     else
       CHECK(first_pair == checked); // SPEC 4: the lone point gives a rank-one matrix, E = 0
   }
+}
+
+// The search's batched eigenvalues run on the path vector_instructions() names; ctest runs the
+// [optimal] tests once more on each path it can force (SIGMOID_NEIGHBORHOODS_SIMD), and every path
+// must give the plain loop's records above bit for bit.
+TEST_CASE("vector instructions: the forced path where the processor has it, else the widest", "[optimal][vector-instructions]")
+{
+  using SN::Vector_instructions;
+  const Vector_instructions used = SN::vector_instructions();
+  CHECK(SN::has_vector_instructions(used));
+  CHECK(SN::has_vector_instructions(Vector_instructions::PORTABLE));
+  const char* forced = std::getenv("SIGMOID_NEIGHBORHOODS_SIMD");
+  bool forced_and_available = false;
+  for(Vector_instructions v : {Vector_instructions::PORTABLE, Vector_instructions::AVX2, Vector_instructions::AVX512})
+    if(forced != nullptr && std::string(forced) == SN::vector_instructions_name(v) && SN::has_vector_instructions(v))
+    {
+      forced_and_available = true;
+      CHECK(used == v);
+    }
+  if(!forced_and_available)
+  {
+    // the widest available
+    const Vector_instructions widest = SN::has_vector_instructions(Vector_instructions::AVX512) ? Vector_instructions::AVX512
+                                       : SN::has_vector_instructions(Vector_instructions::AVX2)   ? Vector_instructions::AVX2
+                                                                                                   : Vector_instructions::PORTABLE;
+    CHECK(used == widest);
+    if(forced != nullptr)
+      WARN("SIGMOID_NEIGHBORHOODS_SIMD=" << forced << " is not available here: the search ran on "
+                                         << SN::vector_instructions_name(used));
+  }
+  INFO("the search runs on " << SN::vector_instructions_name(used));
+  CHECK(std::string(SN::vector_instructions_name(used)).size() > 0);
 }
 
 TEST_CASE("eigenentropy: analytic values, scale invariance, no additive constant", "[features][criterion]")
@@ -683,6 +717,38 @@ TEST_CASE("1 and 2 threads give bit-identical results", "[threads]")
   }
 #else
   WARN("built without OpenMP: only the sequential path is tested");
+#endif
+}
+
+// An input in an order without locality is searched in the tree's leaf order (its records held
+// until all are done) and must give the records of the plain loop, on any number of threads.
+TEST_CASE("a shuffled input: detected, searched in spatial order, the plain loop's records", "[optimal][neighbors]")
+{
+  // 10,000 points: a shuffled order then puts consecutive points ~50 spacings apart
+  const Point_list ordered = folded_sheet(100, 7);
+  Point_list shuffled = ordered;
+  std::shuffle(shuffled.begin(), shuffled.end(), std::mt19937(5));
+  auto positions = [](const Point_list& list) {
+    std::vector<SN::internal::Double_point> result;
+    for(const auto& p : list)
+      result.emplace_back(p.first.x(), p.first.y(), p.first.z());
+    return result;
+  };
+  const auto ordered_positions = positions(ordered), shuffled_positions = positions(shuffled);
+  CHECK_FALSE(SN::internal::Neighbor_query(ordered_positions).has_scattered_order());
+  CHECK(SN::internal::Neighbor_query(shuffled_positions).has_scattered_order());
+
+  const auto records = optimal(shuffled);
+  REQUIRE(records.size() == shuffled.size());
+  for(std::size_t i = 0; i < shuffled.size(); i += 1000)
+    CHECK(same_record(records[i], plain_optimal(shuffled, i, SN::Barycenter::WEIGHTED)));
+#ifdef _OPENMP
+  std::vector<SN::Optimal_sigmoid_neighborhood> parallel;
+  SN::compute_optimal_sigmoid_neighborhoods<CGAL::Parallel_tag>(shuffled, std::back_inserter(parallel),
+                                                                SN::parameters::number_of_threads(2, maps()));
+  REQUIRE(parallel.size() == records.size());
+  for(std::size_t i = 0; i < records.size(); ++i)
+    CHECK(same_record(parallel[i], records[i]));
 #endif
 }
 

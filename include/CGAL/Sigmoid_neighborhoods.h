@@ -10,6 +10,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
+#include <CGAL/Sigmoid_neighborhoods/vector_instructions.h>
 #include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/Mesh_points_summary.h>
 #include <CGAL/Sigmoid_neighborhoods/Point_evaluation.h>

@@ -158,14 +158,27 @@ private:
   double m_largest_angle = 0.;
 };
 
+// How for_each_neighborhood() visits the points of an input whose order has no locality
+// (Neighbor_query::has_scattered_order()).
+enum class Scattered_input
+{
+  IN_INDEX_ORDER, // a block of results at a time: the least memory
+  IN_SPATIAL_ORDER // in the tree's leaf order, every result held until all are done
+};
+
 // Runs `compute(i, local, scratch)` on the neighborhood N_i(k) of every point i from the shared
 // `query`, one `scratch` per thread from `make_scratch()`, and passes the results to
 // `sink(i, result)` in index order, a block at a time (for_each_index_in_blocks()). `with_angles`:
 // see Local_neighborhood::assign().
+// With IN_SPATIAL_ORDER, an input whose order has no locality is visited in the tree's leaf order,
+// where consecutive queries share their neighbors in the cache (2.4 times faster on a shuffled
+// scan), at the cost of holding every result; the results are the same bits, as each depends on its
+// point only.
 template <typename ConcurrencyTag, typename Result, typename MakeScratch, typename Compute, typename Sink>
 void for_each_neighborhood(const Oriented_points& input, const Neighbor_query& query, unsigned int k,
                            unsigned int threads, const MakeScratch& make_scratch, const Compute& compute,
-                           const Sink& sink, bool with_angles = true)
+                           const Sink& sink, bool with_angles = true,
+                           Scattered_input scattered = Scattered_input::IN_INDEX_ORDER)
 {
   typedef decltype(make_scratch()) Inner;
   struct Scratch
@@ -174,14 +187,24 @@ void for_each_neighborhood(const Oriented_points& input, const Neighbor_query& q
     Local_neighborhood local;
     Inner inner;
   };
-  for_each_index_in_blocks<ConcurrencyTag, Result>(
-    input.size(), threads, [&make_scratch] { return Scratch{{}, {}, make_scratch()}; },
-    [&](std::size_t i, Scratch& s) {
-      query.query(static_cast<std::uint32_t>(i), k, s.neighbors);
-      s.local.assign(input, static_cast<std::uint32_t>(i), s.neighbors, with_angles);
-      return compute(i, static_cast<const Local_neighborhood&>(s.local), s.inner);
-    },
-    sink);
+  auto run = [&](std::size_t i, Scratch& s) {
+    query.query(static_cast<std::uint32_t>(i), k, s.neighbors);
+    s.local.assign(input, static_cast<std::uint32_t>(i), s.neighbors, with_angles);
+    return compute(i, static_cast<const Local_neighborhood&>(s.local), s.inner);
+  };
+  auto scratch = [&make_scratch] { return Scratch{{}, {}, make_scratch()}; };
+  if(scattered == Scattered_input::IN_SPATIAL_ORDER && query.has_scattered_order())
+  {
+    const std::vector<std::uint32_t>& order = query.spatial_order();
+    std::vector<Result> results(input.size());
+    for_each_index<ConcurrencyTag>(order.size(), threads, scratch, [&](std::size_t position, Scratch& s) {
+      results[order[position]] = run(order[position], s);
+    });
+    for(std::size_t i = 0; i < results.size(); ++i)
+      sink(i, results[i]);
+    return;
+  }
+  for_each_index_in_blocks<ConcurrencyTag, Result>(input.size(), threads, scratch, run, sink);
 }
 
 } // namespace internal

@@ -86,6 +86,14 @@ public:
   // the tree's leaf order, or 0, 1, ... with given rows (empty).
   const std::vector<std::uint32_t>& spatial_order() const { return m_tree.leaf_order(); }
 
+  // Whether the points come in an order without locality (shuffled, or sorted along one axis
+  // only), where a query per point in index order misses the cache at every neighbor: the median
+  // distance between points consecutive in index order, over a sample, is more than
+  // SCATTERED_ORDER_RATIO times the one in the tree's leaf order. Scans (acquisition order), LAS
+  // files (GPS time) and meshes are local; false with given rows.
+  bool has_scattered_order() const;
+  static constexpr double SCATTERED_ORDER_RATIO = 16.;
+
   std::size_t size() const { return m_points.size(); }
   const std::vector<Double_point>& points() const { return m_points; }
 

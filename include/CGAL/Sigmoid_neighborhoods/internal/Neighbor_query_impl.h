@@ -44,6 +44,30 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Neighbor_query::query(std::uint32_
   }
 }
 
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION bool Neighbor_query::has_scattered_order() const
+{
+  const std::vector<std::uint32_t>& leaves = m_tree.leaf_order();
+  const std::size_t n = m_points.size();
+  if(m_given || n < 2 || leaves.size() != n)
+    return false;
+  // medians of squared distances between consecutive points, at up to 4096 evenly spaced places
+  const std::size_t samples = (std::min)(n - 1, std::size_t(4096)), step = (n - 1) / samples;
+  std::vector<double> in_index_order, in_leaf_order;
+  in_index_order.reserve(samples);
+  in_leaf_order.reserve(samples);
+  for(std::size_t s = 0, i = 0; s < samples; ++s, i += step)
+  {
+    in_index_order.push_back(squared_distance(std::uint32_t(i), std::uint32_t(i + 1)));
+    in_leaf_order.push_back(squared_distance(leaves[i], leaves[i + 1]));
+  }
+  auto median = [](std::vector<double>& v) {
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  const double index_gap = median(in_index_order), leaf_gap = median(in_leaf_order);
+  return index_gap > SCATTERED_ORDER_RATIO * SCATTERED_ORDER_RATIO * leaf_gap;
+}
+
 CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Neighbor_query::query_ball(std::uint32_t i, double radius, std::vector<Neighbor>& result) const
 {
   CGAL_precondition(!m_given);

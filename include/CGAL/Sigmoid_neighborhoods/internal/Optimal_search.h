@@ -7,10 +7,12 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_OPTIMAL_SEARCH_H
 
 #include <CGAL/Sigmoid_neighborhoods/Optimal_sigmoid_neighborhood.h>
+#include <CGAL/Sigmoid_neighborhoods/vector_instructions.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Local_neighborhood.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Symmetric_eigenvalues_3.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Vector_lanes.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/approximate_cosine.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
@@ -547,49 +549,107 @@ private:
   }
 
   // The second half of approximate_shares(): columns [first, end) of the prefix sums to
-  // eigenvalues, in batches of Batch::SizeAtCompileTime sizes k that Eigen vectorizes (the last
-  // batch reads and writes past `end`, within the stride, where nothing is used).
+  // eigenvalues, in batches of sizes k solved together (the last batch reads and writes past `end`,
+  // within the stride, where nothing is used), on the vector instructions of vector_instructions().
   template <bool Weighted>
   static void approximate_eigenvalues(double* columns, std::size_t stride, std::size_t first, std::size_t end)
   {
-    for(std::size_t c = first; c < end; c += Batch::SizeAtCompileTime)
+#ifdef CGAL_SIGMOID_NEIGHBORHOODS_VECTOR_DISPATCH
+    switch(vector_instructions())
     {
-      auto column = [&](Column i) { return Eigen::Map<Batch>(columns + i * stride + c); };
-      const Batch s0 = column(S0), sx = column(SX), sy = column(SY), sz = column(SZ);
+    case Vector_instructions::AVX512:
+      return approximate_eigenvalues_avx512<Weighted>(columns, stride, first, end);
+    case Vector_instructions::AVX2:
+      return approximate_eigenvalues_avx2<Weighted>(columns, stride, first, end);
+    default:
+      break;
+    }
+#endif
+    approximate_eigenvalues_of<Batch, Weighted>(columns, stride, first, end);
+  }
+
+#ifdef CGAL_SIGMOID_NEIGHBORHOODS_VECTOR_DISPATCH
+  // The same source compiled for wider registers: `flatten` inlines the generic code into the
+  // target's instructions, `fp-contract=off` keeps every product and sum separately rounded, as
+  // on the portable path (AVX-512F has multiply-adds of its own).
+  template <bool Weighted>
+  __attribute__((target("avx2"), optimize("fp-contract=off"), flatten)) static void
+  approximate_eigenvalues_avx2(double* columns, std::size_t stride, std::size_t first, std::size_t end)
+  {
+    approximate_eigenvalues_of<Lanes4, Weighted>(columns, stride, first, end);
+  }
+  template <bool Weighted>
+  __attribute__((target("avx512f"), optimize("fp-contract=off"), flatten)) static void
+  approximate_eigenvalues_avx512(double* columns, std::size_t stride, std::size_t first, std::size_t end)
+  {
+    approximate_eigenvalues_of<Lanes8, Weighted>(columns, stride, first, end);
+  }
+#endif
+
+  static Batch load_lanes_of(const double* p, const Batch*) { return Eigen::Map<const Batch>(p); }
+  static void store_lanes_of(double* p, const Batch& v)
+  {
+    Eigen::Map<Batch> target(p);
+    target = v;
+  }
+#ifdef CGAL_SIGMOID_NEIGHBORHOODS_VECTOR_DISPATCH
+  template <typename V>
+  static If_lanes<V> load_lanes_of(const double* p, const V*) { return load_lanes<V>(p); }
+  template <typename V>
+  static void store_lanes_of(double* p, const V& v) { store_lanes(p, v); }
+#endif
+  template <typename T>
+  static constexpr int lanes_of(const T*) { return int(T::SizeAtCompileTime); }
+#ifdef CGAL_SIGMOID_NEIGHBORHOODS_VECTOR_DISPATCH
+  static constexpr int lanes_of(const Lanes4*) { return 4; }
+  static constexpr int lanes_of(const Lanes8*) { return 8; }
+#endif
+
+  // T: Batch (Eigen's packets) or lanes of Vector_lanes.h; the same operations in the same order.
+  template <typename T, bool Weighted>
+  static void approximate_eigenvalues_of(double* columns, std::size_t stride, std::size_t first, std::size_t end)
+  {
+    constexpr int lanes = lanes_of(static_cast<const T*>(nullptr));
+    static_assert(lanes <= Batch::SizeAtCompileTime, "the columns are padded by one Batch");
+    for(std::size_t c = first; c < end; c += lanes)
+    {
+      auto load = [&](Column i) { return load_lanes_of(columns + i * stride + c, static_cast<const T*>(nullptr)); };
+      auto store = [&](Column i, const T& v) { store_lanes_of(columns + i * stride + c, v); };
+      const T s0 = load(S0), sx = load(SX), sy = load(SY), sz = load(SZ);
       // C = S2 - c S1^T - S1 c^T + S0 c c^T, with c the barycenter
-      Batch cx, cy, cz;
+      T cx, cy, cz;
       if(Weighted)
       {
-        const Batch inverse_weight = s0.inverse(); // s0 >= w_ii = 1
+        const T inverse_weight = T(1. / s0); // s0 >= w_ii = 1
         cx = sx * inverse_weight;
         cy = sy * inverse_weight;
         cz = sz * inverse_weight;
       }
       else
       {
-        cx = column(UX);
-        cy = column(UY);
-        cz = column(UZ);
+        cx = load(UX);
+        cy = load(UY);
+        cz = load(UZ);
       }
-      const Batch c00 = column(SXX) - 2. * cx * sx + s0 * cx * cx;
-      const Batch c11 = column(SYY) - 2. * cy * sy + s0 * cy * cy;
-      const Batch c22 = column(SZZ) - 2. * cz * sz + s0 * cz * cz;
-      const Batch c10 = column(SYX) - cy * sx - cx * sy + s0 * cy * cx;
-      const Batch c20 = column(SZX) - cz * sx - cx * sz + s0 * cz * cx;
-      const Batch c21 = column(SZY) - cz * sy - cy * sz + s0 * cz * cy;
-      const Batch trace = c00 + c11 + c22;
+      const T sxx = load(SXX), syy = load(SYY), szz = load(SZZ);
+      const T c00 = sxx - 2. * cx * sx + s0 * cx * cx;
+      const T c11 = syy - 2. * cy * sy + s0 * cy * cy;
+      const T c22 = szz - 2. * cz * sz + s0 * cz * cz;
+      const T c10 = load(SYX) - cy * sx - cx * sy + s0 * cy * cx;
+      const T c20 = load(SZX) - cz * sx - cx * sz + s0 * cz * cx;
+      const T c21 = load(SZY) - cz * sy - cy * sz + s0 * cz * cy;
+      const T trace = c00 + c11 + c22;
       // the size of the terms that cancelled: the rounding error of C is about 1e-16 of it
-      const Batch cancelled = column(SXX) + column(SYY) + column(SZZ) + s0 * (cx * cx + cy * cy + cz * cz);
-      column(TRACE) = trace;
-      column(TRACE_MARGIN) = trace - (DEGENERATE_TRACE_MARGIN * s0 * column(RADIUS)).max(LARGEST_CANCELLATION * cancelled);
-      Batch l1, l2, l3;
-      unscaled_symmetric_eigenvalues_3<Batch>(c00, c10, c20, c11, c21, c22, l1, l2, l3);
-      l2 = l2.max(0.);
-      l3 = l3.max(0.);
-      column(L1) = l1;
-      column(L2) = l2;
-      column(L3) = l3;
-      column(CANCELLATION) = cancelled;
+      const T cancelled = sxx + syy + szz + s0 * (cx * cx + cy * cy + cz * cz);
+      store(TRACE, trace);
+      store(TRACE_MARGIN, T(trace - elementwise_max(T(DEGENERATE_TRACE_MARGIN * s0 * load(RADIUS)),
+                                                    T(LARGEST_CANCELLATION * cancelled))));
+      T l1, l2, l3;
+      unscaled_symmetric_eigenvalues_3<T>(c00, c10, c20, c11, c21, c22, l1, l2, l3);
+      store(L1, l1);
+      store(L2, elementwise_max(l2, 0.));
+      store(L3, elementwise_max(l3, 0.));
+      store(CANCELLATION, cancelled);
     }
   }
 

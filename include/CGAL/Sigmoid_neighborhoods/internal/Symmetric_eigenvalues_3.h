@@ -6,6 +6,8 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_SYMMETRIC_EIGENVALUES_3_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_SYMMETRIC_EIGENVALUES_3_H
 
+#include <CGAL/Sigmoid_neighborhoods/internal/Vector_lanes.h>
+
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 
@@ -54,7 +56,8 @@ typename A::PlainObject elementwise_abs(const Eigen::ArrayBase<A>& a) { return a
 template <typename A>
 typename A::PlainObject elementwise_sqrt(const Eigen::ArrayBase<A>& a) { return a.sqrt(); }
 
-// T: double, or a fixed-size Eigen array of doubles (one matrix per coefficient)
+// T: double, a fixed-size Eigen array of doubles (one matrix per coefficient), or lanes of
+// Vector_lanes.h (inside a function compiled for their instruction set)
 template <typename T>
 void unscaled_symmetric_eigenvalues_3(const T& c00, const T& c10, const T& c20, const T& c11, const T& c21,
                                       const T& c22, T& lambda1, T& lambda2, T& lambda3)

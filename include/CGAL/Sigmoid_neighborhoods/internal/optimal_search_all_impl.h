@@ -31,7 +31,7 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void run_optimal_search(const Oriented_
   for_each_neighborhood<Parallel_if_available_tag, Optimal_sigmoid_neighborhood>(
     input, query, settings.k_max, settings.threads, [&search] { return search.make_scratch(); },
     [&search](std::size_t, const Local_neighborhood& local, Optimal_search::Scratch& s) { return search(local, s); },
-    sink, search.needs_angles());
+    sink, search.needs_angles(), Scattered_input::IN_SPATIAL_ORDER);
 }
 
 CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void run_optimal_point_features(const Oriented_points& input,
@@ -67,7 +67,8 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void run_optimal_point_features(const O
                                         input.normals[i].z(), &record.features);
       return result;
     },
-    [&sink](std::size_t i, const Result& r) { sink(i, r.first, r.second); }, search.needs_angles());
+    [&sink](std::size_t i, const Result& r) { sink(i, r.first, r.second); }, search.needs_angles(),
+    Scattered_input::IN_SPATIAL_ORDER);
 }
 
 } // namespace internal
