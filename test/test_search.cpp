@@ -722,7 +722,7 @@ TEST_CASE("1 and 2 threads give bit-identical results", "[threads]")
 
 // An input in an order without locality is searched in the tree's leaf order (its records held
 // until all are done) and must give the records of the plain loop, on any number of threads.
-TEST_CASE("a shuffled input: detected, searched in spatial order, the plain loop's records", "[optimal][neighbors]")
+TEST_CASE("a shuffled input: detected, searched in spatial order, the plain loop's records", "[neighbors]")
 {
   // 10,000 points: a shuffled order then puts consecutive points ~50 spacings apart
   const Point_list ordered = folded_sheet(100, 7);
