@@ -5,7 +5,7 @@
 
   check_las_tiles.py retile INPUT.las DIR SIZE OX OY
       the tiles of 'catalog retile': one file per cell floor((x - OX) / SIZE), floor((y - OY) / SIZE)
-      holding points, named as the tool documents; each is the input's header, VLRs and trailer
+      holding points, named as the tool documents; each is LAS 1.4, the input's header, VLRs and trailer
       (EVLRs), its records those of the cell byte for byte in the input's order, its counts and
       bounding box right; name order is (i, j) order
   check_las_tiles.py survey DIR POINTS TOLERANCE SIZE
@@ -129,18 +129,28 @@ def check_retile(input_path, folder, size, ox, oy):
         fail("tile names %s..., expected %s..." % (names[:3], sorted(expected)[:3]))
     if [expected[n] for n in names] != sorted(cells):
         fail("name order is not (i, j) order")
-    changed = set(range(107, 131)) | set(range(179, 227))  # counts, bounds
-    if source.is_1_4:
-        changed |= set(range(247, 375)) | set(range(227, 243))
+    # LAS 1.4 tiles: the system identifier and the generating software, the counts, the bounds
+    # and the offsets after the points are the writer's; an older input's header is made a 1.4 one
+    changed = set(range(26, 90)) | set(range(107, 131)) | set(range(179, 227))
+    changed |= set(range(247, 375)) | set(range(227, 243))
     for name in names:
         tile = Las(os.path.join(folder, name))
         if tile.records != cells[expected[name]]:
             fail(name + ": its records are not those of its cell in the input's order")
-        if tile.point_data_start != source.point_data_start:
-            fail(name + ": another offset to the point data")
-        differ = [k for k in range(source.point_data_start) if tile.data[k] != source.data[k] and k not in changed]
-        if differ:
-            fail(name + ": header or VLR bytes differ from the input's at %s" % differ[:10])
+        if (tile.minor, tile.header_size, tile.format, tile.scale, tile.offset) != \
+                (4, 375, source.format, source.scale, source.offset):
+            fail(name + ": not LAS 1.4 with the input's point format, scale and offset")
+        if tile.data[58:90].rstrip(b"\0") != b"Sigmoid_neighborhoods" or tile.data[26:38] != b"MODIFICATION":
+            fail(name + ": generating software %r, system identifier %r" % (tile.data[58:90], tile.data[26:58]))
+        vlrs = source.data[source.header_size:source.point_data_start]
+        if tile.data[375:tile.point_data_start] != vlrs:
+            fail(name + ": its VLRs are not the input's")
+        if source.is_1_4:
+            if tile.point_data_start != source.point_data_start:
+                fail(name + ": another offset to the point data")
+            differ = [k for k in range(source.header_size) if tile.data[k] != source.data[k] and k not in changed]
+            if differ:
+                fail(name + ": header bytes differ from the input's at %s" % differ[:10])
         if tile.trailer != source.trailer:
             fail(name + ": its EVLRs differ from the input's")
         tile.check_summary()

@@ -5,8 +5,8 @@
 # LAZ output read by an independent decoder: laz-perf 0.0.7 (npm, LASzip compiled to WebAssembly)
 # decodes LAZ files written by the las_copy example (point-wise format 3 with extra bytes, layered
 # formats 6 and 8 in several chunks, EVLRs) and by the tool (optimal on a point set: format 6 with
-# float dimensions), and gives the records of their uncompressed copies. Skipped (exit 77) when
-# node, npm or the npm registry is not there.
+# float dimensions; catalog retile's LAZ tiles of a format 6 survey), and gives the records of
+# their uncompressed copies. Skipped (exit 77) when node, npm or the npm registry is not there.
 # usage: laz_perf.sh TOOL LAS_COPY SHARED_DATA_FOLDER NODE_SCRIPT
 set -eu
 tool=$1
@@ -39,4 +39,11 @@ awk 'BEGIN { for(i = 0; i < 3000; ++i) { t = i * 2.39996; z = 1 - 2 * (i + 0.5) 
   || fail "optimal to LAZ"
 "$las_copy" "$dir/sphere.laz" "$dir/sphere.las" > /dev/null || fail "optimal's LAZ not read again"
 pairs="$pairs $dir/sphere.laz=$dir/sphere.las"
+rm -rf "$dir/retiled"
+"$tool" catalog retile "$data/laz/test_data_77050_627755_LA93_IGN69.laz" --size 20 -o "$dir/retiled" 2> /dev/null \
+  || fail "catalog retile to LAZ"
+for tile in "$dir"/retiled/*.laz; do
+  "$las_copy" "$tile" "${tile%.laz}.las" > /dev/null || fail "$tile: not read again"
+  pairs="$pairs $tile=${tile%.laz}.las"
+done
 node "$script" "$dir/npm/node_modules" $pairs

@@ -5,13 +5,17 @@
 # sigmoid-neighborhoods catalog retile on an IGN LiDAR HD tile (LAS 1.4, point format 8): every
 # record in exactly one tile, byte for byte and in order (check_las_tiles.py), the same tiles
 # whatever the buffer and the open files, negative cell indices, EVLRs copied, the tiles a catalog
-# whose union has the input's points; the refusals exit 2 with a message and write no tile.
-# usage: retile.sh TOOL INPUT.las PYTHON CHECKER
+# whose union has the input's points; with LAS_COPY (las_copy_example, the package's public reader
+# and writers), the same input as LAZ: LAS tiles equal to the LAS input's, LAZ tiles that decode to
+# them, the same bytes from either input and for any threads; an older LAS version made LAS 1.4;
+# the refusals exit 2 with a message and write no tile.
+# usage: retile.sh TOOL INPUT.las PYTHON CHECKER [LAS_COPY]
 set -eu
 tool=$1
 input=$2
 python=$3
 checker=$4
+las_copy=${5:-}
 dir=retile-test
 rm -rf "$dir" && mkdir -p "$dir"
 . "$(dirname "$0")/refusals.sh"
@@ -68,10 +72,40 @@ grep -q "828 trailer bytes each" "$dir/check.txt" || fail "EVLR: $(cat "$dir/che
 [ "$(wc -l < "$dir/union_tiles.csv")" -eq "$(wc -l < "$dir/union_file.csv")" ] \
   || fail "union of the tiles: $(wc -l < "$dir/union_tiles.csv") lines, the file: $(wc -l < "$dir/union_file.csv")"
 
+# LAZ in and out
+if [ -n "$las_copy" ]; then
+  laz_input="$dir/$(basename "$input" .las).laz"  # the same stem, so the same tile names
+  "$las_copy" "$input" "$laz_input" --threads 2 > /dev/null || fail "las_copy_example to LAZ"
+  "$tool" catalog retile "$laz_input" --size 10 -o "$dir/laz10" 2> "$dir/laz10.txt" || fail "retile LAZ: $(cat "$dir/laz10.txt")"
+  grep -q "^$dir/laz10: $points points of .* in $tiles tiles of side 10 (LAZ), " "$dir/laz10.txt" \
+    || fail "LAZ summary: $(cat "$dir/laz10.txt")"
+  [ "$(find "$dir/laz10" -name '*.laz' | wc -l)" -eq "$tiles" ] || fail "LAZ input: not $tiles .laz tiles"
+  mkdir -p "$dir/laz10las"
+  for f in "$dir"/laz10/*.laz; do
+    name=$(basename "$f" .laz)
+    "$las_copy" "$f" "$dir/laz10las/$name.las" --threads 1 > /dev/null || fail "las_copy_example cannot decode $f"
+    cmp -s "$dir/laz10las/$name.las" "$dir/t10/$name.las" || fail "$f does not decode to the LAS input's tile"
+  done
+  "$tool" catalog retile "$laz_input" --size 10 --format las -o "$dir/laz10to_las" 2> /dev/null || fail "retile LAZ --format las"
+  for f in "$dir"/t10/*.las; do cmp -s "$f" "$dir/laz10to_las/$(basename "$f")" || fail "$f differs from the LAZ input's"; done
+  "$tool" catalog retile "$input" --size 10 --format laz --threads 1 -o "$dir/las10to_laz" 2> /dev/null \
+    || fail "retile --format laz"
+  for f in "$dir"/laz10/*.laz; do cmp -s "$f" "$dir/las10to_laz/$(basename "$f")" || fail "$f differs from the LAS input's on 1 thread"; done
+  "$tool" catalog list "$dir/laz10" > "$dir/lazlist.txt" || fail "catalog list of LAZ tiles"
+  [ "$(awk -F, '{ s += $2 } END { print s }' "$dir/lazlist.txt")" -eq "$points" ] || fail "LAZ tiles: not $points points"
+  # LAS 1.2 (point format 3, the laspy sample) made LAS 1.4, and a format with waveform packets refused in LAZ
+  data=$(dirname "$input")/../laz
+  if [ -f "$data/simple.las" ] && [ -f "$data/fullwave.laz" ]; then
+    "$tool" catalog retile "$data/simple.las" --size 100 -o "$dir/simple" 2> /dev/null || fail "retile LAS 1.2"
+    "$python" "$checker" retile "$data/simple.las" "$dir/simple" 100 0 0 > "$dir/check.txt" || fail "LAS 1.2: $(cat "$dir/check.txt")"
+    expect_refusal "point format 10 refers to waveform packets" "$tool" catalog retile "$data/fullwave.laz" --size 10 -o "$dir/refused"
+  fi
+fi
+
 # refusals: exit 2, one line, no tile written
 expect_refusal "cannot open" "$tool" catalog retile "$dir/absent.las" --size 10 -o "$dir/refused"
-cp "$input" "$dir/tile.laz"
-expect_refusal "catalog retile copies the records of an uncompressed LAS file" "$tool" catalog retile "$dir/tile.laz" --size 10 -o "$dir/refused"
+expect_refusal "--format must be las or laz" "$tool" catalog retile "$input" --size 10 --format zip -o "$dir/refused"
+expect_refusal "not a .las or .laz file" "$tool" catalog retile "$dir/list.txt" --size 10 -o "$dir/refused"
 "$python" -c "import sys; d=bytearray(open(sys.argv[1],'rb').read()); d[104]|=0x80; open(sys.argv[2],'wb').write(d)" \
   "$input" "$dir/compressed.las"
 expect_refusal "compressed" "$tool" catalog retile "$dir/compressed.las" --size 10 -o "$dir/refused"

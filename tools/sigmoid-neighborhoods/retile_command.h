@@ -1,21 +1,28 @@
 // Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// `sigmoid-neighborhoods catalog retile`: one LAS file cut into square tiles, a catalog for
-// `optimal --catalog`. Streamed: the input is read a chunk at a time, each tile's records wait in a
-// bounded buffer, a bounded number of tile files is open at once (the others are reopened to append),
-// so that the memory does not grow with the input. Every tile is the input's header and VLRs, its
-// own records byte for byte in the input's order, and the input's EVLRs; the header's counts,
-// bounding box and offsets are those of the tile.
+// `sigmoid-neighborhoods catalog retile`: one LAS or LAZ file cut into square tiles, a catalog for
+// `optimal --catalog`. Two streamed passes, so that the memory does not grow with the input: the
+// input's records (decoded by chunks on --threads when compressed) go to one temporary file of raw
+// records per tile, each tile's records waiting in a bounded buffer and a bounded number of those
+// files open at once (the others reopened to append); then every tile is written from its
+// temporary by the package's LAS 1.4 or LAZ writer, tiles in parallel. A tile holds the input's
+// point format, scale, offset, VLRs and EVLRs (las_output_layout_like()), its own records byte for
+// byte in the input's order, and its own counts and bounds.
 
 #ifndef SIGMOID_NEIGHBORHOODS_TOOL_RETILE_COMMAND_H
 #define SIGMOID_NEIGHBORHOODS_TOOL_RETILE_COMMAND_H
 
 #include "command_line.h"
-#include "las_writer.h"
 #include "phase_times.h"
 
+#include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/Las_writer.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/Laz_writer.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/las_output_layout_like.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/read_las_records.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -89,16 +96,17 @@ struct Cell_index_format
   }
 };
 
-// One output tile while the input streams: its records waiting to be written, its temporary file.
+// One output tile while the input streams: its records waiting, the temporary file of its raw
+// records, then the temporary of the tile as written.
 struct Retiled_tile
 {
   std::int64_t i = 0, j = 0;
-  std::string temporary;
-  las::Point_summary points;
+  std::string records_path, tile_path;
+  std::uint64_t count = 0;
   std::vector<unsigned char> waiting;
   std::unique_ptr<std::ofstream> file; // null while closed
   std::uint64_t last_use = 0;
-  bool started = false; // the temporary exists and begins with the input's prefix
+  bool records_started = false, tile_started = false; // the temporaries exist
 };
 
 // The tiles of one retile, written in the folder under temporary names; a failure (an exception,
@@ -106,9 +114,9 @@ struct Retiled_tile
 class Retiled_tiles
 {
 public:
-  Retiled_tiles(const las::Las_layout& layout, const std::string& folder, const std::string& stem,
+  Retiled_tiles(std::size_t record_length, const std::string& folder, const std::string& stem,
                 const Retile_limits& limits)
-    : m_layout(layout), m_folder(folder), m_stem(stem), m_limits(limits)
+    : m_record_length(record_length), m_folder(folder), m_stem(stem), m_limits(limits)
   {
   }
 
@@ -120,8 +128,10 @@ public:
     for(Retiled_tile& t : m_tiles)
     {
       t.file.reset();
-      if(t.started)
-        std::remove(t.temporary.c_str());
+      if(t.records_started)
+        std::remove(t.records_path.c_str());
+      if(t.tile_started)
+        std::remove(t.tile_path.c_str());
     }
     for(const std::string& path : m_committed_on_failure)
       std::remove(path.c_str());
@@ -132,9 +142,9 @@ public:
   void add(std::int64_t i, std::int64_t j, const unsigned char* record)
   {
     Retiled_tile& t = tile(i, j);
-    t.points.add(record, m_layout.has_extended_format());
+    ++t.count;
     const std::size_t held = t.waiting.capacity();
-    t.waiting.insert(t.waiting.end(), record, record + m_layout.record_length);
+    t.waiting.insert(t.waiting.end(), record, record + m_record_length);
     m_held += t.waiting.capacity() - held;
     if(t.waiting.size() >= m_limits.tile_bytes())
       write_waiting(t);
@@ -142,52 +152,54 @@ public:
       release_largest_buffers();
   }
 
-  // Writes what waits, the trailer (the input's EVLRs) and each tile's header.
-  void finish(std::istream& input)
+  // Writes what waits; every tile's raw records are then in its temporary, complete.
+  void finish_records()
   {
     for(Retiled_tile& t : m_tiles)
       write_waiting(t);
     for(Retiled_tile& t : m_tiles)
       close(t);
-    std::vector<char> bytes;
     for(Retiled_tile& t : m_tiles)
-    {
-      std::fstream f(t.temporary, std::ios::in | std::ios::out | std::ios::binary);
-      if(!f)
-        throw write_error(t.temporary);
-      if(m_layout.trailer_bytes() != 0)
-      {
-        f.seekp(0, std::ios::end);
-        input.clear();
-        input.seekg(std::streamoff(m_layout.trailer_start));
-        for(std::uint64_t left = m_layout.trailer_bytes(); left != 0;)
-        {
-          const std::size_t n = std::size_t((std::min)(left, std::uint64_t(RETILE_READ_BYTES)));
-          bytes.resize(n);
-          if(!input.read(bytes.data(), std::streamsize(n)))
-            throw Usage_error("read error in the EVLRs");
-          if(!f.write(bytes.data(), std::streamsize(n)))
-            throw write_error(t.temporary);
-          left -= n;
-        }
-      }
-      const std::vector<unsigned char> header = las::copied_header(m_layout, t.points);
-      f.seekp(0);
-      f.write(reinterpret_cast<const char*>(header.data()), std::streamsize(header.size()));
-      f.close();
-      if(f.fail())
-        throw write_error(t.temporary);
-      const std::uint64_t expected =
-        m_layout.point_data_start + t.points.count * m_layout.record_length + m_layout.trailer_bytes();
-      std::error_code ec;
-      if(std::filesystem::file_size(t.temporary, ec) != expected || ec)
-        throw std::runtime_error(t.temporary + ": not of the " + std::to_string(expected) + " bytes written");
-    }
+      std::vector<unsigned char>().swap(t.waiting);
   }
 
-  // Renames the temporaries to their names, STEM_I_J.las: the tiles are there, complete; `note`
-  // receives how the indices are written when an axis has negative ones.
-  void commit(std::string& note)
+  // Writes every tile with the layout `layout` (LAZ when `compressed`) from its raw records, tiles
+  // on `threads` threads (or, with fewer tiles than threads, one tile at a time on all of them),
+  // and removes the raw records.
+  void write_tiles(const CGAL::Sigmoid_neighborhoods::Las_output_layout& layout, bool compressed,
+                   unsigned int threads)
+  {
+    const bool tiles_in_parallel = m_tiles.size() >= threads;
+    for(Retiled_tile& t : m_tiles)
+      t.tile_path = t.records_path + (compressed ? ".laz" : ".las");
+    std::string failure;
+    const std::int64_t n = std::int64_t(m_tiles.size());
+#pragma omp parallel for schedule(dynamic) num_threads(tiles_in_parallel ? int(threads) : 1)
+    for(std::int64_t k = 0; k < n; ++k)
+    {
+      std::string message;
+      try
+      {
+        write_tile(m_tiles[std::size_t(k)], layout, compressed, tiles_in_parallel ? 1u : threads);
+      }
+      catch(const std::exception& e)
+      {
+        message = e.what();
+      }
+      if(!message.empty())
+      {
+#pragma omp critical(sigmoid_neighborhoods_retile_failure)
+        if(failure.empty())
+          failure = message;
+      }
+    }
+    if(!failure.empty())
+      throw Usage_error(failure);
+  }
+
+  // Renames the tiles' temporaries to their names, STEM_I_J.las (or .laz): the tiles are there,
+  // complete; `note` receives how the indices are written when an axis has negative ones.
+  void commit(const std::string& extension, std::string& note)
   {
     std::int64_t i_low = m_tiles.front().i, i_high = i_low, j_low = m_tiles.front().j, j_high = j_low;
     for(const Retiled_tile& t : m_tiles)
@@ -203,12 +215,12 @@ public:
         note += std::string(", ") + axis.first + " + " + std::to_string(axis.second.bias) + " in the names";
     for(Retiled_tile& t : m_tiles)
     {
-      const std::string name =
-        (std::filesystem::path(m_folder) / (m_stem + "_" + i_format.text(t.i) + "_" + j_format.text(t.j) + ".las"))
-          .string();
-      if(std::rename(t.temporary.c_str(), name.c_str()) != 0)
+      const std::string name = (std::filesystem::path(m_folder) /
+                                (m_stem + "_" + i_format.text(t.i) + "_" + j_format.text(t.j) + "." + extension))
+                                 .string();
+      if(std::rename(t.tile_path.c_str(), name.c_str()) != 0)
         throw write_error(name);
-      t.started = false;
+      t.tile_started = false;
       m_committed_on_failure.push_back(name);
     }
     m_committed_on_failure.clear();
@@ -218,6 +230,58 @@ private:
   static Usage_error write_error(const std::string& path)
   {
     return Usage_error("cannot write " + path + ": " + (errno != 0 ? std::strerror(errno) : "write error"));
+  }
+
+  // The tile `t` written whole from its raw records (RETILE_READ_BYTES at a time), which are then removed.
+  void write_tile(Retiled_tile& t, const CGAL::Sigmoid_neighborhoods::Las_output_layout& layout, bool compressed,
+                  unsigned int threads) const
+  {
+    namespace SN = CGAL::Sigmoid_neighborhoods;
+    std::ifstream records(t.records_path, std::ios::binary);
+    if(!records)
+      throw Usage_error("cannot read " + t.records_path + " back: " + std::strerror(errno));
+    errno = 0;
+    t.tile_started = true;
+    std::ofstream out(t.tile_path, std::ios::binary | std::ios::trunc);
+    if(!out)
+      throw write_error(t.tile_path);
+    auto copy = [&](auto& writer) {
+      std::vector<unsigned char> block;
+      const std::uint64_t block_records = (std::max)(std::size_t(1), RETILE_READ_BYTES / m_record_length);
+      for(std::uint64_t left = t.count; left != 0;)
+      {
+        const std::size_t count = std::size_t((std::min)(left, block_records));
+        block.resize(count * m_record_length);
+        if(!records.read(reinterpret_cast<char*>(block.data()), std::streamsize(block.size())))
+          throw Usage_error(t.records_path + ": the tile's records read back short");
+        writer.write(block.data(), count);
+        left -= count;
+      }
+      writer.close();
+    };
+    try
+    {
+      if(compressed)
+      {
+        SN::Laz_writer<> writer(out, layout, threads);
+        copy(writer);
+      }
+      else
+      {
+        SN::Las_writer writer(out, layout);
+        copy(writer);
+      }
+    }
+    catch(const std::ios_base::failure&)
+    {
+      throw write_error(t.tile_path);
+    }
+    out.close();
+    if(out.fail())
+      throw write_error(t.tile_path);
+    records.close();
+    std::remove(t.records_path.c_str());
+    t.records_started = false;
   }
 
   Retiled_tile& tile(std::int64_t i, std::int64_t j)
@@ -234,9 +298,9 @@ private:
       Retiled_tile& t = m_tiles.back();
       t.i = i;
       t.j = j;
-      t.temporary = (std::filesystem::path(m_folder) / (m_stem + ".retile" + std::to_string(m_tiles.size() - 1) +
-                                                        TEMPORARY_SUFFIX + std::to_string(::getpid())))
-                      .string();
+      t.records_path = (std::filesystem::path(m_folder) / (m_stem + ".retile" + std::to_string(m_tiles.size() - 1) +
+                                                           TEMPORARY_SUFFIX + std::to_string(::getpid())))
+                         .string();
     }
     m_last = found.first->second;
     return m_tiles[m_last];
@@ -270,7 +334,7 @@ private:
     std::ofstream& out = open(t);
     errno = 0;
     if(!out.write(reinterpret_cast<const char*>(t.waiting.data()), std::streamsize(t.waiting.size())))
-      throw write_error(t.temporary);
+      throw write_error(t.records_path);
     t.waiting.clear(); // its memory kept for the next records, counted in m_held
   }
 
@@ -287,15 +351,11 @@ private:
       close(m_tiles[*oldest]);
     }
     errno = 0;
-    t.file.reset(new std::ofstream(t.temporary, std::ios::binary | (t.started ? std::ios::app : std::ios::trunc)));
+    t.file.reset(
+      new std::ofstream(t.records_path, std::ios::binary | (t.records_started ? std::ios::app : std::ios::trunc)));
+    t.records_started = true;
     if(!*t.file)
-      throw write_error(t.temporary);
-    if(!t.started)
-    {
-      t.started = true;
-      if(!t.file->write(reinterpret_cast<const char*>(m_layout.prefix.data()), std::streamsize(m_layout.prefix.size())))
-        throw write_error(t.temporary);
-    }
+      throw write_error(t.records_path);
     m_open.push_back(std::size_t(&t - m_tiles.data()));
     return *t.file;
   }
@@ -310,10 +370,10 @@ private:
     t.file.reset();
     m_open.erase(std::find(m_open.begin(), m_open.end(), std::size_t(&t - m_tiles.data())));
     if(failed)
-      throw write_error(t.temporary);
+      throw write_error(t.records_path);
   }
 
-  const las::Las_layout& m_layout;
+  std::size_t m_record_length;
   std::string m_folder, m_stem;
   Retile_limits m_limits;
   std::vector<Retiled_tile> m_tiles;
@@ -324,7 +384,6 @@ private:
   std::size_t m_held = 0; // the memory of the tiles' buffers: what --buffer bounds
   std::vector<std::string> m_committed_on_failure;
 };
-
 // --origin X Y, taken out of the arguments: Arguments reads options of one or of three values.
 inline std::vector<char*> take_origin(int argc, char** argv, double& x, double& y)
 {
@@ -370,15 +429,17 @@ inline void check_retile_folder(const std::string& folder)
 
 inline int run_retile(int argc, char** argv, const char* usage)
 {
+  namespace SN = CGAL::Sigmoid_neighborhoods;
   Phase_times times;
   double origin_x = 0., origin_y = 0.;
   std::vector<char*> rest = take_origin(argc, argv, origin_x, origin_y);
   const Arguments args(int(rest.size()), rest.data(), FIRST_COMMAND_ARGUMENT + 1,
-                       {"-o", "--output", "--size", "--buffer", "--open-files"}, {"-h", "--help"});
+                       {"-o", "--output", "--size", "--buffer", "--open-files", "--format", "--threads"},
+                       {"-h", "--help"});
   if(print_help(args, usage))
     return EXIT_OK;
   if(args.positional().size() != 1)
-    throw Usage_error("catalog retile needs exactly one INPUT.las");
+    throw Usage_error("catalog retile needs exactly one INPUT.las or INPUT.laz");
   const std::string input = args.positional()[0];
   const std::string folder = args.output();
   if(folder.empty())
@@ -396,76 +457,83 @@ inline int run_retile(int argc, char** argv, const char* usage)
   limits.open_files = args.get_unsigned("--open-files", RETILE_DEFAULT_OPEN_FILES);
   if(limits.open_files == 0)
     throw Usage_error("--open-files must be at least 1");
+  const unsigned int threads = resolved_threads(read_threads(args));
 
-  const std::string extension = CGAL::Sigmoid_neighborhoods::lower_case_extension(input);
-  if(extension == "laz")
-    throw Usage_error(input + ": " + las::laz_refusal());
-  if(extension != "las")
-    throw Usage_error(input + ": not a .las file");
-  std::ifstream in(input, std::ios::binary);
-  std::error_code ec;
-  const std::uintmax_t file_size = std::filesystem::file_size(input, ec);
-  if(!in || ec)
-    throw Usage_error(input + ": cannot open the file" + (ec ? " (" + ec.message() + ")" : std::string()));
-  las::Las_layout layout;
+  const std::string extension = SN::lower_case_extension(input);
+  if(extension != "las" && extension != "laz")
+    throw Usage_error(input + ": not a .las or .laz file");
+  // The tiles are compressed as the input is, unless --format says otherwise.
+  const std::string format = args.has("--format") ? args.get("--format") : extension;
+  if(format != "las" && format != "laz")
+    throw Usage_error("--format must be las or laz, got '" + format + "'");
+  SN::Las_header header;
+  SN::Las_output_layout layout;
   try
   {
-    layout = las::read_las_layout(in, file_size);
+    header = SN::read_las_header(input);
+    layout = SN::las_output_layout_like(input, {});
   }
-  catch(const las::Las_format_error& e)
+  catch(const SN::Input_error& e)
   {
     throw Usage_error(input + ": " + e.what());
   }
-  if(layout.point_count == 0)
+  if(header.point_count == 0)
     throw Usage_error(input + ": no points, no tile to write");
+  const unsigned int f = header.point_format;
+  if(format == "laz" && (f == 4 || f == 5 || f == 9 || f == 10))
+    throw Usage_error(input + ": point format " + std::to_string(f) +
+                      " refers to waveform packets, which LAZ tiles are not written with: --format las");
   check_retile_folder(folder);
 
-  Retiled_tiles tiles(layout, folder, std::filesystem::path(input).stem().string(), limits);
-  const std::size_t chunk_points = (std::max)(std::size_t(1), RETILE_READ_BYTES / layout.record_length);
-  std::vector<unsigned char> chunk;
-  in.seekg(std::streamoff(layout.point_data_start));
-  times.end("reading");
-  double reading_seconds = 0.;
-  for(std::uint64_t first = 0; first < layout.point_count;)
+  Retiled_tiles tiles(header.record_length, folder, std::filesystem::path(input).stem().string(), limits);
+  double tiling_seconds = 0.;
+  try
   {
-    const std::size_t count = std::size_t((std::min)(std::uint64_t(chunk_points), layout.point_count - first));
-    chunk.resize(count * layout.record_length);
-    const auto read_start = std::chrono::steady_clock::now();
-    if(!in.read(reinterpret_cast<char*>(chunk.data()), std::streamsize(chunk.size())))
-      throw Usage_error(input + ": cannot parse the file as las (the file ends in point " +
-                        std::to_string(first + std::uint64_t(in.gcount()) / layout.record_length) + ")");
-    reading_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - read_start).count();
-    for(std::size_t k = 0; k < count; ++k)
-    {
-      const unsigned char* record = chunk.data() + k * layout.record_length;
-      std::int64_t cell[2];
-      for(int c = 0; c < 2; ++c)
-      {
-        // The cells of compute_height_features(), shifted by the origin: floor((x - ox) / S).
-        const double coordinate = double(las::load_little_endian<std::int32_t>(record + 4 * c)) * layout.scale[c] + layout.offset[c];
-        const double index = std::floor((coordinate - (c == 0 ? origin_x : origin_y)) / size);
-        if(!(std::abs(index) < RETILE_LARGEST_CELL_INDEX))
-          throw Usage_error(input + ": point " + std::to_string(first + k) + " lies " +
-                            (std::isfinite(index) ? "more than 1e15 tiles from the origin" : "at a non-finite coordinate"));
-        cell[c] = std::int64_t(index);
-      }
-      tiles.add(cell[0], cell[1], record);
-    }
-    first += count;
+    SN::read_las_records(
+      input,
+      [&](std::size_t first, const unsigned char* records, std::size_t count) {
+        const auto start = std::chrono::steady_clock::now();
+        for(std::size_t k = 0; k < count; ++k)
+        {
+          const unsigned char* record = records + k * header.record_length;
+          std::int64_t cell[2];
+          for(int c = 0; c < 2; ++c)
+          {
+            // The cells of compute_height_features(), shifted by the origin: floor((x - ox) / S).
+            const double coordinate =
+              double(SN::load_little_endian<std::int32_t>(record + 4 * c)) * header.scale[c] + header.offset[c];
+            const double index = std::floor((coordinate - (c == 0 ? origin_x : origin_y)) / size);
+            if(!(std::abs(index) < RETILE_LARGEST_CELL_INDEX))
+              throw Usage_error(input + ": point " + std::to_string(first + k) + " lies " +
+                                (std::isfinite(index) ? "more than 1e15 tiles from the origin"
+                                                      : "at a non-finite coordinate"));
+            cell[c] = std::int64_t(index);
+          }
+          tiles.add(cell[0], cell[1], record);
+        }
+        tiling_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      },
+      threads);
+  }
+  catch(const SN::Input_error& e)
+  {
+    throw Usage_error(input + ": " + e.what());
   }
   // the records sorted into their tiles' buffers, full buffers written as they fill
-  times.end("tiling");
-  times.move("tiling", "reading", reading_seconds);
-  tiles.finish(in);
+  times.end("reading");
+  times.move("reading", "tiling", tiling_seconds);
+  tiles.finish_records();
+  tiles.write_tiles(layout, format == "laz", threads);
   std::string note;
-  tiles.commit(note);
+  tiles.commit(format, note);
   times.end("writing");
   char timing[32];
   std::snprintf(timing, sizeof(timing), "%.1f s", times.total());
-  std::cerr << folder << ": " << layout.point_count << " points of " << input << " in " << tiles.size()
+  std::cerr << folder << ": " << header.point_count << " points of " << input << " in " << tiles.size()
             << (tiles.size() == 1 ? " tile" : " tiles") << " of side " << number17(size)
-            << (layout.trailer_bytes() != 0
-                  ? ", its EVLRs and waveform data (" + std::to_string(layout.trailer_bytes()) + " bytes) in every tile"
+            << (format == "laz" ? " (LAZ)" : "")
+            << (!layout.evlrs.empty()
+                  ? ", its EVLRs and waveform data (" + std::to_string(layout.evlrs.size()) + " bytes) in every tile"
                   : std::string())
             << note << ", " << timing << " (" << times.text() << ")\n";
   return EXIT_OK;
