@@ -422,7 +422,7 @@ TEST_CASE("Ethz_forest::train: CGAL's Random_forest_classifier::train() bit for 
   std::stringstream cgal_bytes;
   classifier.save_configuration(cgal_bytes);
 
-  std::vector<float> rows;
+  std::vector<float> rows{0.f}; // the float read before the first row
   std::vector<int> row_labels;
   for(std::size_t i = 0; i < n; ++i)
     if(truth[i] >= 0)
@@ -432,6 +432,7 @@ TEST_CASE("Ethz_forest::train: CGAL's Random_forest_classifier::train() bit for 
       row_labels.push_back(truth[i]);
     }
   REQUIRE(std::count(rows.begin(), rows.end(), SN::Classification::Feature_values::NON_FINITE_VALUE) == 2);
+  std::string first;
   for(const unsigned int threads : {1u, 2u, 3u})
   {
     const SN::Classification::Ethz_forest forest = SN::Classification::Ethz_forest::train<SN::Parallel_if_available_tag>(
@@ -441,6 +442,9 @@ TEST_CASE("Ethz_forest::train: CGAL's Random_forest_classifier::train() bit for 
     std::stringstream bytes;
     forest.save_configuration(bytes);
     CHECK(with_leaves_masked(bytes.str(), 3) == with_leaves_masked(cgal_bytes.str(), 3));
+    if(first.empty())
+      first = bytes.str();
+    CHECK(bytes.str() == first); // every byte: no split left uninitialised
   }
   const SN::Classification::Ethz_forest sequential =
     SN::Classification::Ethz_forest::train<CGAL::Sequential_tag>(rows, row_labels, 3, 7, 9);
@@ -460,7 +464,7 @@ TEST_CASE("Ethz_forest::train: CGAL's Random_forest_classifier::train() bit for 
   std::vector<int> predicted;
   std::vector<std::vector<float>> confidence;
   sequential.classify<CGAL::Sequential_tag>(
-    row_labels.size(), [&](std::size_t i, std::size_t f) { return rows[i * width + f]; }, predicted, confidence);
+    row_labels.size(), [&](std::size_t i, std::size_t f) { return rows[1 + i * width + f]; }, predicted, confidence);
   std::size_t right = 0;
   for(std::size_t i = 0; i < row_labels.size(); ++i)
     right += predicted[i] == row_labels[i];
@@ -469,7 +473,57 @@ TEST_CASE("Ethz_forest::train: CGAL's Random_forest_classifier::train() bit for 
   rows.pop_back();
   CHECK_THROWS_AS(SN::Classification::Ethz_forest::train<CGAL::Sequential_tag>(rows, row_labels, 3, 7, 9),
                   std::invalid_argument);
+  rows.erase(rows.begin()); // the rows without the float before them
+  rows.push_back(0.f);
+  CHECK_THROWS_AS(SN::Classification::Ethz_forest::train<CGAL::Sequential_tag>(rows, row_labels, 3, 7, 9),
+                  std::invalid_argument);
   CHECK_THROWS_AS(SN::Classification::Ethz_forest::train<CGAL::Sequential_tag>(std::vector<float>(), {}, 3, 7, 9), std::invalid_argument);
+}
+
+TEST_CASE("Ethz_forest::train: a node no split separates reads the float before the rows and a threshold of 0",
+          "[classification]")
+{
+  // Items equal in every feature and of two classes: every split proposal fails, and CGAL 5.5 keeps
+  // the default split (feature -1), sending each item by the float before its row and a threshold
+  // CGAL leaves uninitialised. Here that threshold is 0 and item 0 reads the given float (under the
+  // sanitizer, a read before the rows would stop the test): the trees are the same bytes every time.
+  const std::size_t n = 64, width = 3;
+  std::vector<float> rows(1 + n * width, 0.5f);
+  rows[0] = 0.f;
+  std::vector<int> labels(n);
+  for(std::size_t i = 0; i < n; ++i)
+    labels[i] = int(i % 2);
+  std::string first;
+  for(const unsigned int threads : {1u, 2u, 3u, 1u})
+  {
+    const SN::Classification::Ethz_forest forest = SN::Classification::Ethz_forest::train<SN::Parallel_if_available_tag>(
+      rows, labels, 2, 5, 6, SN::parameters::number_of_threads(threads));
+    std::stringstream bytes;
+    forest.save_configuration(bytes);
+    if(first.empty())
+      first = bytes.str();
+    CHECK(bytes.str() == first);
+  }
+  // the first tree's root: a split (leaf flag 0) on feature -1 at threshold 0
+  const std::size_t root = 36;
+  REQUIRE(first.size() > root + 17);
+  std::int32_t feature = 0;
+  float threshold = 1.f;
+  std::memcpy(&feature, first.data() + root + 9, 4);
+  std::memcpy(&threshold, first.data() + root + 13, 4);
+  CHECK(first[root] == 0);
+  CHECK(feature == -1);
+  CHECK(threshold == 0.f);
+  // the model reads back, and classify() puts 0 before each item, as before item 0 here: every item
+  // goes left at each such split, to the leaf of item 0 alone (class 0) or of none
+  const SN::Classification::Ethz_forest forest(first, 2, width);
+  std::vector<int> predicted;
+  std::vector<std::vector<float>> confidence;
+  forest.classify<CGAL::Sequential_tag>(
+    2, [&](std::size_t, std::size_t) { return 0.5; }, predicted, confidence);
+  CHECK(predicted == std::vector<int>{0, 0});
+  CHECK(confidence[1] == std::vector<float>{0.f, 0.f});
+  CHECK(confidence[0][0] == confidence[0][1]);
 }
 
 TEST_CASE("the groups cgal, cgal-metric and cgal-grid: CGAL's generator bit for bit, on any thread count",

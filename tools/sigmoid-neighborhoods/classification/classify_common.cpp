@@ -191,7 +191,7 @@ void append_training_rows(const std::vector<Feature_column>& columns, const std:
       points.push_back(i);
   const std::size_t first = rows.labels.size(), width = names.size();
   rows.labels.resize(first + points.size());
-  rows.values.resize((first + points.size()) * width);
+  rows.values.resize(1 + (first + points.size()) * width);
   // in blocks of rows, a column at a time: each column read in order, the block's rows in the cache
   const std::size_t block = 256;
   const std::ptrdiff_t blocks = std::ptrdiff_t((points.size() + block - 1) / block);
@@ -204,7 +204,7 @@ void append_training_rows(const std::vector<Feature_column>& columns, const std:
     for(std::size_t f = 0; f < width; ++f)
     {
       const std::vector<double>& column = *ordered[f];
-      float* value = rows.values.data() + (first + begin) * width + f;
+      float* value = rows.values.data() + 1 + (first + begin) * width + f;
       for(std::size_t r = begin; r < end; ++r, value += width)
         *value = SN::Classification::Feature_values::stored_value(column[points[r]]);
     }
@@ -241,7 +241,7 @@ void train(const std::vector<Featured_file>& files, Trained& t)
   const std::vector<std::string> names = column_names(files.front().columns);
   t.settings.feature_names = ordered_names(names, t.settings.feature_order_seed);
   Training_rows rows;
-  rows.values.reserve(used * names.size());
+  rows.values.reserve(1 + used * names.size());
   rows.labels.reserve(used);
   for(std::size_t f = 0; f < files.size(); ++f)
   {
@@ -295,7 +295,7 @@ std::size_t train_file_by_file(const std::vector<std::string>& paths, Trained& t
     {
       names = column_names(f.columns);
       t.settings.feature_names = ordered_names(names, t.settings.feature_order_seed);
-      rows.values.reserve(used * names.size()); // the rows' one allocation
+      rows.values.reserve(1 + used * names.size()); // the rows' one allocation
     }
     else if(column_names(f.columns) != names)
       throw std::logic_error("files with different feature columns");

@@ -209,7 +209,7 @@ Confusion cross_validated(const std::array<Training_rows, 2>& train, const std::
     std::vector<int> predicted;
     std::vector<std::vector<float>> confidence;
     forest.classify<SN::Parallel_if_available_tag>(
-      other.labels.size(), [&](std::size_t i, std::size_t f) { return other.values[i * width + f]; }, predicted,
+      other.labels.size(), [&](std::size_t i, std::size_t f) { return other.values[1 + i * width + f]; }, predicted,
       confidence, SN::parameters::number_of_threads(s.features.threads));
     for(std::size_t i = 0; i < predicted.size(); ++i)
       pooled.add(other.labels[i], predicted[i]);

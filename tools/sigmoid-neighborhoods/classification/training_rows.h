@@ -46,10 +46,10 @@ struct Uninitialized_allocator : std::allocator<T>
 };
 
 // The training points' features, row-major in the forest's order, as CGAL's forest reads them
-// (Feature_values::stored_value()), and their classes.
+// (Feature_values::stored_value()), after one float of 0 (Ethz_forest::train()), and their classes.
 struct Training_rows
 {
-  std::vector<float, Uninitialized_allocator<float>> values;
+  std::vector<float, Uninitialized_allocator<float>> values{0.f}; // values[1 + i * width + f]
   std::vector<int> labels;
 };
 

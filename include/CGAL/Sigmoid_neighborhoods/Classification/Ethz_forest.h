@@ -51,8 +51,16 @@ namespace Classification {
 */
 class Ethz_forest
 {
+  // CGAL 5.5's axis-aligned split with a threshold from the start: a node whose split proposals all
+  // failed keeps its default split, feature -1, whose threshold CGAL leaves uninitialised and then
+  // compares its items to (the trees would depend on what the memory held). The same bytes on disk.
+  struct Splitter : CGAL::internal::liblearning::RandomForest::AxisAlignedSplitter
+  {
+    Splitter() { threshold = 0.f; }
+    Splitter(const AxisAlignedSplitter& proposal) : AxisAlignedSplitter(proposal) {}
+  };
   typedef CGAL::internal::liblearning::RandomForest::RandomForest<
-    CGAL::internal::liblearning::RandomForest::NodeGini<CGAL::internal::liblearning::RandomForest::AxisAlignedSplitter>>
+    CGAL::internal::liblearning::RandomForest::NodeGini<Splitter>>
     Forest;
 
 public:
@@ -101,7 +109,8 @@ public:
         const bool leaf = bytes[at] != 0;
         std::int32_t feature = 0;
         std::memcpy(&feature, bytes.data() + at + 9, 4);
-        if(!leaf && (feature < 0 || std::size_t(feature) >= number_of_features))
+        // -1: a split no proposal made, which reads the float before the item's (classify())
+        if(!leaf && (feature < -1 || (feature >= 0 && std::size_t(feature) >= number_of_features)))
           return "tree " + std::to_string(t + 1) + " splits on feature " + std::to_string(feature) + " of " +
                  std::to_string(number_of_features);
         at += node_bytes;
@@ -142,14 +151,18 @@ public:
     \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag`
     \tparam FeatureRange a contiguous range of `float` with `data()` and `size()` (`std::vector<float>`,
     with any allocator)
-    \param features row-major, `features[i * f + j]` the feature `j` of item `i`, `f` the number of
-    features, as `Feature_values` stores them (`Feature_values::stored_value()`)
+    \param features one float, then the rows: `features[1 + i * f + j]` the feature `j` of item `i`,
+    `f` the number of features, as `Feature_values` stores them (`Feature_values::stored_value()`).
+    The first float is read where CGAL 5.5 reads before the first row: a node whose split proposals
+    all failed (its items equal in every feature it drew) keeps the feature -1, and its items are
+    then sent left or right by the float before each row. Write 0 there, as `classify()` does before
+    each item; CGAL's own matrix has no such float, and reads outside its memory.
     \param labels the label of each item, in [0, `number_of_labels`)
     \param number_of_labels the labels the forest votes for
     \param num_trees the number of trees (CGAL's default: 25)
     \param max_depth the depth of the trees at most (CGAL's default: 20)
     \param np optional: `number_of_threads` (0, the default: all)
-    \pre `labels` is not empty, `features.size()` is a multiple of `labels.size()`
+    \pre `labels` is not empty, `features.size() - 1` is a multiple of `labels.size()`
   */
   template <typename ConcurrencyTag, typename FeatureRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
   static Ethz_forest train(const FeatureRange& features, const std::vector<int>& labels,
@@ -157,9 +170,9 @@ public:
                            const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
   {
     namespace RF = CGAL::internal::liblearning::RandomForest;
-    if(labels.empty() || features.size() % labels.size() != 0)
+    if(labels.empty() || features.size() == 0 || (features.size() - 1) % labels.size() != 0)
       throw std::invalid_argument("Ethz_forest::train: " + std::to_string(features.size()) + " values for " +
-                                  std::to_string(labels.size()) + " items");
+                                  std::to_string(labels.size()) + " items (one float, then the rows)");
     // RandomForest::train() of CGAL 5.5 with reset trees, no sample indices and seeds from 0, as
     // Random_forest_classifier::train() calls it, with its loop over the trees on the package's loop
     RF::ForestParams params;
@@ -168,7 +181,7 @@ public:
     std::unique_ptr<Forest> forest = std::make_unique<Forest>(params);
     RF::ForestParams& p = forest->params; // the trees point to their forest's parameters
     p.n_classes = number_of_labels;
-    p.n_features = features.size() / labels.size();
+    p.n_features = (features.size() - 1) / labels.size();
     p.n_samples = labels.size();
     std::vector<int> sample_idxes(p.n_samples);
     for(std::size_t i = 0; i < p.n_samples; ++i)
@@ -178,8 +191,8 @@ public:
     for(std::size_t t = 0; t < p.n_trees; ++t)
       forest->trees.push_back(new Forest::TreeType(&p));
     // the view's element type is not const; nothing writes through it
-    const CGAL::internal::liblearning::DataView2D<float> samples(const_cast<float*>(features.data()), p.n_samples,
-                                                                 p.n_features);
+    const CGAL::internal::liblearning::DataView2D<float> samples(const_cast<float*>(features.data()) + 1,
+                                                                 p.n_samples, p.n_features);
     const CGAL::internal::liblearning::DataView2D<int> truth(const_cast<int*>(labels.data()), p.n_samples, 1);
     const RF::AxisAlignedRandomSplitGenerator generator;
     const RF::Tree_training_functor<Forest::TreeType::NodeType, RF::AxisAlignedRandomSplitGenerator> train_tree(
