@@ -525,6 +525,11 @@ TEST_CASE("LAZ out: wave packets, empty and one-point files", "[laz][io][laz-out
     std::ostringstream out;
     CHECK_THROWS_WITH(SN::Laz_writer<>(out, layout), Catch::Contains("wave packets"));
   }
+  std::vector<unsigned int> with_wave_packets;
+  for(unsigned int format = 0; format <= 10; ++format)
+    if(SN::las_format_has_wave_packets(format))
+      with_wave_packets.push_back(format);
+  CHECK(with_wave_packets == std::vector<unsigned int>{4, 5, 9, 10});
   SN::Las_output_layout layout = SN::las_output_layout_for({{0., 0., 0.}}, {{1., 1., 1.}}, {});
   layout.record_length = layout.copied_record_length;
   const std::string empty = write_laz("empty.laz", layout, "", 2);

@@ -71,7 +71,7 @@ void check_las_output(const std::string& path, const Las_output_points& points)
   {
     return; // reading the input says what is wrong with it
   }
-  if(format == 4 || format == 5 || format == 9 || format == 10)
+  if(SN::las_format_has_wave_packets(format))
     throw Usage_error("cannot write " + path + ": LAZ: the wave packets of point format " + std::to_string(format) +
                       " of " + points.source + " are not compressed (write the file as LAS)");
 }

@@ -480,7 +480,7 @@ inline int run_retile(int argc, char** argv, const char* usage)
   if(header.point_count == 0)
     throw Usage_error(input + ": no points, no tile to write");
   const unsigned int f = header.point_format;
-  if(format == "laz" && (f == 4 || f == 5 || f == 9 || f == 10))
+  if(format == "laz" && SN::las_format_has_wave_packets(f))
     throw Usage_error(input + ": point format " + std::to_string(f) +
                       " refers to waveform packets, which LAZ tiles are not written with: --format las");
   check_retile_folder(folder);

@@ -22,6 +22,14 @@ constexpr std::uint16_t LAS_POINT_RECORD_BYTES[11] = {20, 28, 26, 34, 57, 63, 30
 } // namespace internal
 /// \endcond
 
+/// \ingroup PkgSigmoidNeighborhoodsIO
+/// whether records of LAS point data format `point_format` hold wave packets (formats 4, 5, 9 and
+/// 10), which LAZ output does not compress
+constexpr bool las_format_has_wave_packets(unsigned int point_format)
+{
+  return point_format == 4 || point_format == 5 || point_format == 9 || point_format == 10;
+}
+
 /*!
   \ingroup PkgSigmoidNeighborhoodsIO
   what the public header block of a LAS or LAZ file (ASPRS LAS 1.0 to 1.4 R15) says of its point

@@ -33,7 +33,7 @@ inline std::vector<Item> laz_items_for(unsigned int point_format, std::size_t re
 {
   if(point_format > 10)
     throw std::invalid_argument("LAZ: point format " + std::to_string(point_format) + ", not one of LAS 1.4's 0 to 10");
-  if(point_format == 4 || point_format == 5 || point_format == 9 || point_format == 10)
+  if(las_format_has_wave_packets(point_format))
     throw std::invalid_argument("LAZ: the wave packets of point format " + std::to_string(point_format) +
                                 " are not compressed (write the file as LAS)");
   if(record_length < LAS_POINT_RECORD_BYTES[point_format] || record_length > 0xFFFF)
