@@ -57,6 +57,7 @@ class Ethz_forest
   struct Splitter : CGAL::internal::liblearning::RandomForest::AxisAlignedSplitter
   {
     Splitter() { threshold = 0.f; }
+    // implicit: CGAL's node assigns each proposal of its split generator to its splitter
     Splitter(const AxisAlignedSplitter& proposal) : AxisAlignedSplitter(proposal) {}
   };
   typedef CGAL::internal::liblearning::RandomForest::RandomForest<
