@@ -6,7 +6,6 @@
 #include "catalog_input.h"
 #include "command_line.h"
 #include "json.h"
-#include "retile_command.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -217,7 +216,7 @@ int run_catalog(int argc, char** argv)
   if(sub == "merge")
     return run_merge_tiles(argc, argv);
   if(sub == "retile")
-    return run_retile(argc, argv, CATALOG_COMMAND_USAGE);
+    return run_catalog_retile(argc, argv, CATALOG_COMMAND_USAGE);
   if(sub == "-h" || sub == "--help")
   {
     std::cout << CATALOG_COMMAND_USAGE;

@@ -19,6 +19,7 @@ int run_denoise_command(int argc, char** argv);            // denoise_command.cp
 int run_denoise_comparison_command(int argc, char** argv); // denoise_comparison_command.cpp
 int run_classify(int argc, char** argv);                   // classify_command.cpp
 int run_catalog(int argc, char** argv);                    // catalog_command.cpp
+int run_catalog_retile(int argc, char** argv, const char* usage); // retile_command.cpp
 
 } // namespace sigmoid_tool
 

@@ -8,8 +8,6 @@
 #ifndef SIGMOID_NEIGHBORHOODS_TOOL_PHASE_TIMES_H
 #define SIGMOID_NEIGHBORHOODS_TOOL_PHASE_TIMES_H
 
-#include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
-
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -29,8 +27,10 @@ public:
   void end(const std::string& name) { add(name, seconds_since_last()); }
 
   // Ends the reading: the reader's time split into the steps of its normal estimation and the rest,
-  // the reading itself (files, parsing, checks, merging, a tile's halo).
-  void end_reading(const CGAL::Sigmoid_neighborhoods::Oriented_point_set& model)
+  // the reading itself (files, parsing, checks, merging, a tile's halo). A template on the package's
+  // Oriented_point_set, so that commands that read none (retile) do not compile CGAL's kernel.
+  template <typename Oriented_point_set>
+  void end_reading(const Oriented_point_set& model)
   {
     const auto& s = model.seconds;
     const double total = seconds_since_last();

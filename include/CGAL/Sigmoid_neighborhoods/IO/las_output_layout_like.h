@@ -10,7 +10,7 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/Las_header.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Las_output_layout.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_las.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_las_header.h>
 
 #include <algorithm>
 #include <array>

@@ -7,7 +7,8 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_READ_LAS_RECORDS_H
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Las_header.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_las.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/las_record_blocks.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_las_header.h>
 
 #include <fstream>
 #include <string>
