@@ -718,3 +718,27 @@ TEST_CASE("cgal-metric with grids anchored at the origin: CGAL's generator where
     differing += !same_bits(cut[5].values[i], whole[elevation].values[i]);
   CHECK(differing > 0);
 }
+
+TEST_CASE("CGAL's voxel representatives: the same on any thread count, sorted in parallel past 2^16 points",
+          "[classification][concurrency]")
+{
+  // 100,000 points on a lattice of 0.1 with every tenth one repeated: many voxels, ties in voxel
+  // and in distance to the centroid, broken by index whatever the sort
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> cell(0, 199);
+  std::vector<SN::internal::Double_point> points;
+  for(std::size_t i = 0; i < 100000; ++i)
+    points.emplace_back(points.size() % 10 == 9 ? points.back()
+                                                 : SN::internal::Double_point(0.1 * cell(rng), 0.1 * cell(rng), 0.1 * (cell(rng) % 4)));
+  const std::vector<std::uint32_t> sequential =
+    SN::internal::voxel_representatives<CGAL::Sequential_tag>(points, 0.35f, 1);
+  CHECK(sequential.size() > 1000);
+  for(unsigned int threads : {1u, 2u, 3u})
+    CHECK(SN::internal::voxel_representatives<CGAL::Parallel_tag>(points, 0.35f, threads) == sequential);
+  // each a point of its voxel: the first point of every voxel by index is one of them or tied with one
+  std::vector<bool> chosen(points.size(), false);
+  for(std::uint32_t r : sequential)
+    chosen[r] = true;
+  for(std::size_t i = 9; i < points.size(); i += 10)
+    CHECK(!chosen[i]); // a repeated point ties with the one before it, which comes first
+}

@@ -204,6 +204,26 @@ TEST_CASE("pyramid features: bit-identical for any thread count", "[pyramid][cla
         differing += !same_record(parallel[i][l], sequential[i][l]);
     CHECK(differing == 0);
   }
+  // the per-level records, read through each point's nearest representative, are the same
+  const std::vector<SN::Pyramid_level> levels = SN::build_point_pyramid<CGAL::Sequential_tag>(points, cells, 10, maps());
+  for(unsigned threads : {1u, 2u, 3u})
+  {
+    const std::vector<std::vector<SN::Point_features>> per_level = SN::compute_pyramid_level_features<CGAL::Parallel_tag>(
+      points, levels, 10, sigmoid, SNP::number_of_threads(threads, maps()));
+    REQUIRE(per_level.size() == cells.size());
+    std::size_t differing = 0;
+    for(std::size_t l = 0; l < cells.size(); ++l)
+    {
+      REQUIRE(per_level[l].size() == levels[l].thinning.representatives.size());
+      for(std::size_t i = 0; i < points.size(); ++i)
+        differing += !same_record(per_level[l][levels[l].thinning.nearest_representative[i]], sequential[i][l]);
+    }
+    CHECK(differing == 0);
+  }
+  std::vector<SN::Pyramid_level> other = levels;
+  other[1].thinning.nearest_representative.pop_back();
+  CHECK_THROWS_AS(SN::compute_pyramid_level_features<CGAL::Sequential_tag>(points, other, 10, sigmoid, maps()),
+                  std::invalid_argument);
 }
 
 TEST_CASE("pyramid features: nearly the same on a surface thinned 4x, at the levels coarser than its spacing",

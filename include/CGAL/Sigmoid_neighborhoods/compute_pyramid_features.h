@@ -116,45 +116,38 @@ build_point_pyramid(const PointRange& points, const std::vector<double>& cell_si
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
-  \brief computes the `Point_features` of every point on every level of a pyramid: on each level,
-  those of the representatives with `compute_point_features()` at size `k` on the level's rows
-  (weights `sigmoid` between the representatives' normals, the normals of the original points), and
-  every point given the record of its nearest representative (`Voxel_thinning::nearest_representative`).
+  \brief computes the `Point_features` of the representatives of every level of a pyramid: on each
+  level, `compute_point_features()` at size `k` on the level's rows (weights `sigmoid` between the
+  representatives' normals, the normals of the original points).
 
-  Each level's records are bit for bit those of `compute_point_features()` at `k` on the
-  representatives alone; the results are the same for any number of threads.
+  A point's record on level `l` is `result[l][levels[l].thinning.nearest_representative[i]]`: what
+  `compute_pyramid_features()` gives every point, without a vector of levels per point (a caller
+  that stores the features by column reads them so, in parallel). The records are bit for bit those
+  of `compute_point_features()` at `k` on the representatives alone, for any number of threads.
 
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag`
   \tparam PointRange a model of `ConstRange` whose value type is the key type of the maps
-  \tparam OutputIterator an output iterator accepting `std::vector<Point_features>`: one per point,
-         in the order of `points`, holding one record per level, in the order of `levels`
   \tparam NamedParameters a sequence of named parameters
 
   \param points the input points, with oriented normals
   \param levels the pyramid of `points` (`build_point_pyramid()`), rows of at least `k` neighbors
   \param k the neighborhood size on every level
   \param sigmoid the weights `sig_{a,b}` (`Cosine_sigmoid(CGAL_PI, CGAL_PI)`: equal weights)
-  \param output receives the records
   \param np an optional sequence of named parameters: `point_map`, `normal_map`, `barycenter`,
     `line_angles` and `number_of_threads`, as for `compute_point_features()`
 
   \pre `levels` built on `points`; finite coordinates; non-zero finite normals (otherwise
        `std::invalid_argument`)
-  \return the output iterator past the last record
+  \return per level, the records of its representatives, in the order of `thinning.representatives`
 */
-template <typename ConcurrencyTag, typename PointRange, typename OutputIterator,
-          typename CGAL_NP_TEMPLATE_PARAMETERS>
-#ifdef DOXYGEN_RUNNING
-OutputIterator
-#else
-std::enable_if_t<internal::is_range<PointRange>::value, OutputIterator>
-#endif
-compute_pyramid_features(const PointRange& points, const std::vector<Pyramid_level>& levels, unsigned int k,
-                         const Cosine_sigmoid& sigmoid, OutputIterator output,
-                         const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+template <typename ConcurrencyTag, typename PointRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
+std::vector<std::vector<Point_features>>
+compute_pyramid_level_features(const PointRange& points, const std::vector<Pyramid_level>& levels, unsigned int k,
+                               const Cosine_sigmoid& sigmoid,
+                               const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
-  static_assert(NP_helper::has_normal_map(), "compute_pyramid_features() needs a normal map");
+  static_assert(NP_helper::has_normal_map(), "the pyramid's features need a normal map");
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const auto point_map = NP_helper::get_const_point_map(points, np);
@@ -164,7 +157,6 @@ compute_pyramid_features(const PointRange& points, const std::vector<Pyramid_lev
   const unsigned int threads = internal::number_of_threads(np);
   const std::size_t n = std::size_t(std::distance(std::begin(points), std::end(points)));
 
-  // per level, the records of its representatives
   std::vector<std::vector<Point_features>> per_level(levels.size());
   for(std::size_t l = 0; l < levels.size(); ++l)
   {
@@ -206,6 +198,52 @@ compute_pyramid_features(const PointRange& points, const std::vector<Pyramid_lev
     for(const std::vector<Point_features>& r : records)
       per_level[l].push_back(r.front());
   }
+  return per_level;
+}
+
+/*!
+  \ingroup PkgSigmoidNeighborhoodsRef
+  \brief computes the `Point_features` of every point on every level of a pyramid: on each level,
+  those of the representatives with `compute_point_features()` at size `k` on the level's rows
+  (weights `sigmoid` between the representatives' normals, the normals of the original points), and
+  every point given the record of its nearest representative (`Voxel_thinning::nearest_representative`).
+
+  Each level's records are bit for bit those of `compute_point_features()` at `k` on the
+  representatives alone (`compute_pyramid_level_features()`); the results are the same for any
+  number of threads.
+
+  \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag`
+  \tparam PointRange a model of `ConstRange` whose value type is the key type of the maps
+  \tparam OutputIterator an output iterator accepting `std::vector<Point_features>`: one per point,
+         in the order of `points`, holding one record per level, in the order of `levels`
+  \tparam NamedParameters a sequence of named parameters
+
+  \param points the input points, with oriented normals
+  \param levels the pyramid of `points` (`build_point_pyramid()`), rows of at least `k` neighbors
+  \param k the neighborhood size on every level
+  \param sigmoid the weights `sig_{a,b}` (`Cosine_sigmoid(CGAL_PI, CGAL_PI)`: equal weights)
+  \param output receives the records
+  \param np an optional sequence of named parameters: `point_map`, `normal_map`, `barycenter`,
+    `line_angles` and `number_of_threads`, as for `compute_point_features()`
+
+  \pre `levels` built on `points`; finite coordinates; non-zero finite normals (otherwise
+       `std::invalid_argument`)
+  \return the output iterator past the last record
+*/
+template <typename ConcurrencyTag, typename PointRange, typename OutputIterator,
+          typename CGAL_NP_TEMPLATE_PARAMETERS>
+#ifdef DOXYGEN_RUNNING
+OutputIterator
+#else
+std::enable_if_t<internal::is_range<PointRange>::value, OutputIterator>
+#endif
+compute_pyramid_features(const PointRange& points, const std::vector<Pyramid_level>& levels, unsigned int k,
+                         const Cosine_sigmoid& sigmoid, OutputIterator output,
+                         const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
+{
+  const std::vector<std::vector<Point_features>> per_level =
+    compute_pyramid_level_features<ConcurrencyTag>(points, levels, k, sigmoid, np);
+  const std::size_t n = std::size_t(std::distance(std::begin(points), std::end(points)));
   std::vector<Point_features> point(levels.size());
   for(std::size_t i = 0; i < n; ++i)
   {

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <limits>
 #include <string>
@@ -93,6 +94,9 @@ void append_height_features(const SN::Oriented_point_set& model, double cell, co
   SN::compute_height_features(model.points, cell, std::back_inserter(heights));
   Feature_column above{"height_above_lowest" + suffix, {}}, below{"height_below_highest" + suffix, {}},
     range_column{"vertical_range" + suffix, {}};
+  above.values.reserve(heights.size());
+  below.values.reserve(heights.size());
+  range_column.values.reserve(heights.size());
   for(const SN::Height_features& h : heights)
   {
     above.values.push_back(h.height_above_lowest);
@@ -254,40 +258,71 @@ void compute_pyramid(Feature_group_input& in, bool sigmoid, std::vector<Feature_
       weighted.push_back(l);
     else if(!both)
       equal.push_back(l);
-  std::vector<std::vector<SN::Point_features>> per_point(model.points.size());
+  // the weighted levels, then the equal ones: the columns in that order, each point's record its
+  // nearest representative's on the level, read in parallel
   for(const bool with_weights : {true, false})
   {
     const std::vector<std::size_t>& which = with_weights ? weighted : equal;
     if(which.empty())
       continue;
+    // the group's levels lent from the shared pyramid and given back: a copy costs a pass per level
     std::vector<SN::Pyramid_level> levels;
     for(std::size_t l : which)
-      levels.push_back(in.pyramid[l]);
+      levels.push_back(std::move(in.pyramid[l]));
     const SN::Cosine_sigmoid weights = with_weights ? SN::Cosine_sigmoid(o.sigmoid_a, o.sigmoid_b)
                                                     : SN::Cosine_sigmoid(CGAL_PI, CGAL_PI);
     std::vector<std::vector<SN::Point_features>> records;
-    records.reserve(model.points.size());
-    SN::compute_pyramid_features<SN::Parallel_if_available_tag>(point_indices(model.points.size()), levels,
-                                                                o.pyramid_k, weights, std::back_inserter(records),
-                                                                SNP::number_of_threads(o.threads, model_maps(model)));
-    const std::ptrdiff_t count = std::ptrdiff_t(records.size());
-#ifdef _OPENMP
-#pragma omp parallel for schedule(static) num_threads(o.threads == 0 ? omp_get_max_threads() : int(o.threads))
-#endif
-    for(std::ptrdiff_t i = 0; i < count; ++i)
-      per_point[std::size_t(i)].insert(per_point[std::size_t(i)].end(), records[std::size_t(i)].begin(),
-                                       records[std::size_t(i)].end());
+    std::exception_ptr failure;
+    try
+    {
+      records = SN::compute_pyramid_level_features<SN::Parallel_if_available_tag>(
+        point_indices(model.points.size()), levels, o.pyramid_k, weights,
+        SNP::number_of_threads(o.threads, model_maps(model)));
+    }
+    catch(...)
+    {
+      failure = std::current_exception();
+    }
+    for(std::size_t c = 0; c < which.size(); ++c)
+      in.pyramid[which[c]] = std::move(levels[c]);
+    if(failure)
+      std::rethrow_exception(failure);
+    for(std::size_t c = 0; c < which.size(); ++c)
+    {
+      const std::vector<std::uint32_t>& nearest = in.pyramid[which[c]].thinning.nearest_representative;
+      append_point_features(
+        model.points.size(), [&](std::size_t i) -> const SN::Point_features& { return records[c][nearest[i]]; },
+        shape_features(), (with_weights ? "_sigmoid" : "") + pyramid_suffix(cells[which[c]]), o.threads, columns);
+    }
   }
-  // per_point holds the weighted levels, then the equal ones: the columns in that order
-  std::vector<std::size_t> order = weighted;
-  order.insert(order.end(), equal.begin(), equal.end());
-  for(std::size_t c = 0; c < order.size(); ++c)
-    append_point_features(
-      per_point.size(), [&](std::size_t i) -> const SN::Point_features& { return per_point[i][c]; }, shape_features(),
-      (c < weighted.size() ? "_sigmoid" : "") + pyramid_suffix(cells[order[c]]), o.threads, columns);
   if(!both)
-    for(double cell : cells)
-      append_height_features(model, cell, pyramid_suffix(cell), columns);
+  {
+    // the heights of the cell sizes side by side: each one pass over the points into a map of cells
+    std::vector<std::vector<Feature_column>> heights(cells.size());
+    std::vector<std::exception_ptr> failures(cells.size());
+    const std::ptrdiff_t count = std::ptrdiff_t(cells.size());
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic) num_threads(o.threads == 0 ? omp_get_max_threads() : int(o.threads))
+#endif
+    for(std::ptrdiff_t c = 0; c < count; ++c)
+    {
+      try
+      {
+        append_height_features(model, cells[std::size_t(c)], pyramid_suffix(cells[std::size_t(c)]),
+                               heights[std::size_t(c)]);
+      }
+      catch(...)
+      {
+        failures[std::size_t(c)] = std::current_exception();
+      }
+    }
+    for(const std::exception_ptr& failure : failures)
+      if(failure)
+        std::rethrow_exception(failure); // the first cell size's, whatever the threads
+    for(std::vector<Feature_column>& h : heights)
+      for(Feature_column& column : h)
+        columns.push_back(std::move(column));
+  }
 }
 
 // The halo of the heights in cells of side `largest`: a cell meeting the tile lies within its side

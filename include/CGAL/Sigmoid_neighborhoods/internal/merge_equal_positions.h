@@ -6,15 +6,11 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_MERGE_EQUAL_POSITIONS_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_MERGE_EQUAL_POSITIONS_H
 
-#include <algorithm>
+#include <CGAL/Sigmoid_neighborhoods/internal/sort_on_threads.h>
+
 #include <array>
 #include <cstddef>
 #include <vector>
-
-#ifdef _OPENMP
-#include <omp.h>
-#include <parallel/algorithm>
-#endif
 
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
@@ -53,15 +49,7 @@ Merged_positions merge_equal_positions(const std::vector<Point>& points, const s
     const auto pa = position(a), pb = position(b);
     return pa < pb || (!(pb < pa) && a < b);
   };
-#ifdef _OPENMP
-  // no OpenMP region for a small set: a forked child (the readers' limit tests) cannot start one
-  const int team = threads == 0 ? omp_get_max_threads() : int(threads);
-  if(team > 1 && order.size() >= (std::size_t(1) << 16))
-    __gnu_parallel::sort(order.begin(), order.end(), before,
-                         __gnu_parallel::default_parallel_tag(static_cast<__gnu_parallel::_ThreadIndex>(team)));
-  else
-#endif
-    std::sort(order.begin(), order.end(), before);
+  sort_on_threads(order.begin(), order.end(), before, threads);
   // each point's first point at its position; a first point is its own
   std::vector<std::size_t> first_at(points.size(), Merged_positions::LEFT_OUT);
   for(std::size_t r = 0; r < order.size(); ++r)

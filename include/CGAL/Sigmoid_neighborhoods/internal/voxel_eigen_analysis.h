@@ -8,6 +8,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/internal/Point_kd_tree.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/sort_on_threads.h>
 
 #include <CGAL/Classification/compressed_float.h>
 #include <CGAL/Default_diagonalize_traits.h>
@@ -41,10 +42,11 @@ std::vector<std::uint32_t> voxel_representatives(const std::vector<Double_point>
     std::uint32_t index;
   };
   std::vector<Keyed> keyed(points.size());
-  for(std::size_t i = 0; i < points.size(); ++i)
+  for_each_index<ConcurrencyTag>(points.size(), threads, [] { return 0; }, [&](std::size_t i, int) {
     keyed[i] = Keyed{std::floor(points[i].x() / voxel_size), std::floor(points[i].y() / voxel_size),
                      std::floor(points[i].z() / voxel_size), std::uint32_t(i)};
-  std::sort(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) {
+  }, 4096);
+  sort_on_threads(keyed.begin(), keyed.end(), [](const Keyed& a, const Keyed& b) {
     if(a.x != b.x)
       return a.x < b.x;
     if(a.y != b.y)
@@ -52,7 +54,7 @@ std::vector<std::uint32_t> voxel_representatives(const std::vector<Double_point>
     if(a.z != b.z)
       return a.z < b.z;
     return a.index < b.index;
-  });
+  }, kernel_threads<ConcurrencyTag>(threads));
   std::vector<std::size_t> voxel_begin;
   for(std::size_t e = 0; e < keyed.size(); ++e)
     if(e == 0 || keyed[e].x != keyed[e - 1].x || keyed[e].y != keyed[e - 1].y || keyed[e].z != keyed[e - 1].z)
