@@ -9,6 +9,7 @@
 #include <CGAL/Sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Normal_options.h>
 #include <CGAL/Sigmoid_neighborhoods/Normal_estimation_method.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -842,6 +843,42 @@ TEST_CASE("caller-computed neighborhoods are checked", "[neighborhoods][bad-inpu
   std::vector<std::uint32_t> itself = indices;
   itself[offsets[2]] = 2;
   CHECK_THROWS_WITH(run(itself, offsets), Catch::Contains("neighborhood of point 2 contains the point itself"));
+}
+
+TEST_CASE("caller-computed neighborhoods: checked on threads, the first fault named whatever their number",
+          "[neighborhoods][bad-input][threads]")
+{
+  const std::size_t n = 5000; // above the size checked in parallel
+  std::vector<std::uint32_t> indices;
+  std::vector<std::size_t> offsets{0};
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    indices.push_back(std::uint32_t((i + 1) % n));
+    indices.push_back(std::uint32_t((i + 2) % n));
+    offsets.push_back(indices.size());
+  }
+  auto message = [&](const std::vector<std::uint32_t>& ind, const std::vector<std::size_t>& off, unsigned int threads) {
+    try
+    {
+      SN::internal::check_neighbor_rows(ind, off, n, threads);
+      return std::string("sound");
+    }
+    catch(const std::invalid_argument& e)
+    {
+      return std::string(e.what());
+    }
+  };
+  std::vector<std::uint32_t> two_faults = indices;
+  two_faults[2 * 4300] = 4300;             // the point itself, in row 4300
+  two_faults[2 * 4200 + 1] = std::uint32_t(n); // out of range, in row 4200: the first named
+  std::vector<std::size_t> past_end = offsets; // row 2000 runs past the indices, row 2001 goes back
+  past_end[2001] = indices.size() + 10;
+  for(unsigned int threads : {1u, 2u, 3u})
+  {
+    CHECK(message(indices, offsets, threads) == "sound");
+    CHECK(message(two_faults, offsets, threads) == "neighborhood of point 4200: index 5000 is out of range (5000 points)");
+    CHECK(message(indices, past_end, threads) == "the neighbor offsets must not decrease (at point 2001)");
+  }
 }
 
 TEST_CASE("Parallel_tag: an exception at one index reaches the caller as that exception", "[threads]")

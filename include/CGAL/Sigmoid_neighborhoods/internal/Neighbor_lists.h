@@ -11,6 +11,7 @@
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
@@ -75,12 +76,12 @@ Neighbor_lists neighbor_lists(const Lists& lists, std::size_t n)
   return result;
 }
 
-// The caller's neighborhoods in compressed rows (random-access ranges), checked: `offsets` of size
-// n + 1, starting at 0, non-decreasing, ending at the size of `indices`. Copied once, into the result.
-// Checks the caller's compressed rows: n + 1 non-decreasing offsets from 0 to the number of
-// indices, every index in range and none its own row's point.
+// Checks the caller's compressed rows (random-access ranges): n + 1 non-decreasing offsets from 0
+// to the number of indices, every index in range and none its own row's point. Sound rows are
+// checked on `threads` threads (0: the default); where a row is not, a pass in order finds the
+// first fault, so that the message does not depend on the threads.
 template <typename Indices, typename Offsets>
-void check_neighbor_rows(const Indices& indices, const Offsets& offsets, std::size_t n)
+void check_neighbor_rows(const Indices& indices, const Offsets& offsets, std::size_t n, unsigned int threads = 1)
 {
   const auto index = std::begin(indices);
   const auto offset = std::begin(offsets);
@@ -92,6 +93,26 @@ void check_neighbor_rows(const Indices& indices, const Offsets& offsets, std::si
   if(std::size_t(offset[0]) != 0 || std::size_t(offset[n]) != index_count)
     throw std::invalid_argument("the neighbor offsets must start at 0 and end at the number of neighbor indices (" +
                                 std::to_string(index_count) + ")");
+  if(threads != 1 && n >= 4096)
+  {
+    std::atomic<bool> sound(true);
+    for_each_index<Parallel_if_available_tag>(n, threads, [] { return 0; }, [&](std::size_t i, int) {
+      // a row past the indices is a fault too: the offsets' order is not known yet
+      if(offset[i + 1] < offset[i] || std::size_t(offset[i + 1]) > index_count)
+      {
+        sound.store(false, std::memory_order_relaxed);
+        return;
+      }
+      for(auto j = index + std::ptrdiff_t(offset[i]); j != index + std::ptrdiff_t(offset[i + 1]); ++j)
+        if(!index_in_range(*j, n) || std::size_t(*j) == i)
+        {
+          sound.store(false, std::memory_order_relaxed);
+          return;
+        }
+    }, 4096);
+    if(sound.load())
+      return;
+  }
   for(std::size_t i = 0; i < n; ++i)
     if(offset[i + 1] < offset[i])
       throw std::invalid_argument("the neighbor offsets must not decrease (at point " + std::to_string(i) + ")");
@@ -156,15 +177,17 @@ Neighbor_query neighbor_query(const std::vector<Double_point>& points, const Nam
     typedef decltype(indices) Indices_reference;
     typedef decltype(offsets) Offsets_reference;
     constexpr bool native = is_native_rows<std::decay_t<Indices_reference>, std::decay_t<Offsets_reference>>;
+    const unsigned int threads = kernel_threads<ConcurrencyTag>(
+      CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::number_of_threads), 0u));
     if constexpr(native && std::is_lvalue_reference<Indices_reference>::value &&
                  std::is_lvalue_reference<Offsets_reference>::value)
     {
-      check_neighbor_rows(indices, offsets, points.size());
+      check_neighbor_rows(indices, offsets, points.size(), threads);
       return Neighbor_query(points, offsets.data(), indices.data());
     }
     else if constexpr(native)
     {
-      check_neighbor_rows(indices, offsets, points.size());
+      check_neighbor_rows(indices, offsets, points.size(), threads);
       return Neighbor_query(points, std::vector<std::size_t>(std::move(offsets)),
                             std::vector<std::uint32_t>(std::move(indices)));
     }
