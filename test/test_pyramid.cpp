@@ -154,6 +154,36 @@ TEST_CASE("voxel thinning: the rule and the mapping against brute force, for any
   }
 }
 
+TEST_CASE("voxel thinning: bad points named by the first, on any thread count", "[pyramid][bad-input][threads]")
+{
+  // above the size checked on threads: the points and their voxels are checked in parallel, and a
+  // fault sends the check through the points in order
+  const Point_list sound = wavy(6000, 10., 3);
+  auto message = [](const Point_list& points, double cell, unsigned int threads) {
+    try
+    {
+      SN::thin_on_voxel_grid<CGAL::Parallel_tag>(points, cell, SNP::number_of_threads(threads, maps()));
+      return std::string("sound");
+    }
+    catch(const std::invalid_argument& e)
+    {
+      return std::string(e.what());
+    }
+  };
+  Point_list not_finite = sound;
+  not_finite[4300].first = Point_3(std::nan(""), 0., 0.);
+  not_finite[4200].first = Point_3(0., std::numeric_limits<double>::infinity(), 0.);
+  Point_list far = sound; // within the coordinates' range, beyond the voxels' at a cell of 1e-10
+  far[5000].first = Point_3(1e140, 0., 0.);
+  far[4999].first = Point_3(0., -1e140, 0.);
+  for(unsigned int threads : {1u, 2u, 3u})
+  {
+    CHECK(message(sound, 0.5, threads) == "sound");
+    CHECK(message(not_finite, 0.5, threads) == "point 4200 has a non-finite coordinate");
+    CHECK(message(far, 1e-10, threads) == "point 4999 lies beyond the voxels' 64-bit range");
+  }
+}
+
 TEST_CASE("pyramid features: each level's equal to the features of the thinned set alone, bit for bit",
           "[pyramid][classification]")
 {

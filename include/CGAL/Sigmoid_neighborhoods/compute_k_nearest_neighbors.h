@@ -58,7 +58,8 @@ void compute_k_nearest_neighbors(const PointRange& points, unsigned int k, std::
   if(k < 1)
     throw std::invalid_argument("the number of neighbors k must be at least 1");
   const std::vector<internal::Double_point> copy =
-    internal::checked_points(points, NP_helper::get_const_point_map(points, np));
+    internal::checked_points(points, NP_helper::get_const_point_map(points, np),
+                             internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np)));
   if(copy.size() > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
     throw std::invalid_argument("compute_k_nearest_neighbors(): more than 2^32 - 1 points");
   const unsigned int threads = internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np));

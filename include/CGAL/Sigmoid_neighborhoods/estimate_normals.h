@@ -137,7 +137,8 @@ void estimate_normals(PointRange& points, unsigned int k, const CGAL_NP_CLASS& n
                                 std::to_string(k));
 
   const std::vector<internal::Double_point> copy =
-    internal::checked_points(points, NP_helper::get_const_point_map(points, np));
+    internal::checked_points(points, NP_helper::get_const_point_map(points, np),
+                             internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np)));
   if(copy.size() < std::size_t(k) + 1)
     throw std::invalid_argument("estimate_normals(): needs at least k + 1 = " + std::to_string(k + 1) +
                                 " points, got " + std::to_string(copy.size()));

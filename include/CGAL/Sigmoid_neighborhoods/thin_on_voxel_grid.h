@@ -15,6 +15,7 @@
 #include <CGAL/Named_function_parameters.h>
 
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -183,13 +184,28 @@ thin_on_voxel_grid(const PointRange& points, double cell_size, const CGAL_NP_CLA
   if(!(cell_size > 0.) || !std::isfinite(cell_size))
     throw std::invalid_argument("the cell size must be positive and finite, got " + std::to_string(cell_size));
   const std::vector<internal::Double_point> copy =
-    internal::checked_points(points, NP_helper::get_const_point_map(points, np));
+    internal::checked_points(points, NP_helper::get_const_point_map(points, np),
+                             internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np)));
   if(copy.size() > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
     throw std::invalid_argument("thin_on_voxel_grid(): more than 2^32 - 1 points");
   const std::size_t n = copy.size();
+  const unsigned int threads = internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np));
   std::vector<internal::Voxel> voxels(n);
-  for(std::size_t i = 0; i < n; ++i)
-    voxels[i] = internal::voxel_of(copy[i], cell_size, i);
+  // on the threads; a point beyond the voxels' range is named by a pass in order, the first
+  std::atomic<bool> in_range(true);
+  internal::for_each_index<ConcurrencyTag>(n, threads, [] { return 0; }, [&](std::size_t i, int&) {
+    try
+    {
+      voxels[i] = internal::voxel_of(copy[i], cell_size, i);
+    }
+    catch(const std::invalid_argument&)
+    {
+      in_range.store(false, std::memory_order_relaxed);
+    }
+  }, 4096);
+  if(!in_range.load())
+    for(std::size_t i = 0; i < n; ++i)
+      voxels[i] = internal::voxel_of(copy[i], cell_size, i);
 
   // each cell's point nearest to its centre; visited in index order, so a tie keeps the smaller index
   internal::Voxel_table chosen;
@@ -218,7 +234,7 @@ thin_on_voxel_grid(const PointRange& points, double cell_size, const CGAL_NP_CLA
   // of the box's sides, so that skipping never changes the result.
   result.nearest_representative.assign(n, 0);
   internal::for_each_index<ConcurrencyTag>(
-    n, internal::number_of_threads(np), [] { return 0; },
+    n, threads, [] { return 0; },
     [&](std::size_t i, int&) {
       const internal::Double_point& p = copy[i];
       const internal::Voxel& v = voxels[i];

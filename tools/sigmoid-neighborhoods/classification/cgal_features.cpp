@@ -230,10 +230,19 @@ void append_anchored_cgal_features(const SN::Oriented_point_set& model, unsigned
   SNC::compute_anchored_cgal_features<SN::Parallel_if_available_tag>(
     model.points, float(voxel), scales, grid_only ? SNC::Anchored_cgal_features::GRIDS_ONLY : SNC::Anchored_cgal_features::ALL,
     std::back_inserter(features), SN::parameters::number_of_threads(threads));
-  for(auto& f : features)
+  // the columns in double, one per thread at a time (each allocated and filled by its thread)
+  const std::size_t first = columns.size();
+  for(const auto& f : features)
+    columns.push_back(Feature_column{f.first, {}});
+  const std::ptrdiff_t count = std::ptrdiff_t(features.size());
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic) num_threads(threads == 0 ? omp_get_max_threads() : int(threads))
+#endif
+  for(std::ptrdiff_t c = 0; c < count; ++c)
   {
-    columns.push_back(Feature_column{f.first, std::vector<double>(f.second.begin(), f.second.end())});
-    std::vector<float>().swap(f.second);
+    std::vector<float>& values = features[std::size_t(c)].second;
+    columns[first + std::size_t(c)].values.assign(values.begin(), values.end());
+    std::vector<float>().swap(values);
   }
 }
 

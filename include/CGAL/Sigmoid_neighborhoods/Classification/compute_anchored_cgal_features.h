@@ -81,7 +81,8 @@ OutputIterator compute_anchored_cgal_features(const PointRange& points, float vo
   if(!(voxel_size > 0.f) || !std::isfinite(voxel_size) || scales < 1)
     throw std::invalid_argument("compute_anchored_cgal_features(): the voxel must be positive and scales >= 1");
   const std::vector<internal::Double_point> copy =
-    internal::checked_points(points, NP_helper::get_const_point_map(points, np));
+    internal::checked_points(points, NP_helper::get_const_point_map(points, np),
+                             internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np)));
   if(copy.size() > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
     throw std::invalid_argument("compute_anchored_cgal_features(): more than 2^32 - 1 points");
   const unsigned int threads = internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np));
@@ -193,7 +194,8 @@ std::vector<double> anchored_cgal_neighbor_reach(const PointRange& points, float
 {
   typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
   const std::vector<internal::Double_point> copy =
-    internal::checked_points(points, NP_helper::get_const_point_map(points, np));
+    internal::checked_points(points, NP_helper::get_const_point_map(points, np),
+                             internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np)));
   if(first > last || last > copy.size())
     throw std::invalid_argument("anchored_cgal_neighbor_reach(): the points first ... last - 1 are not in the set");
   const unsigned int threads = internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np));

@@ -7,12 +7,14 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_ORIENTED_POINTS_H
 
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
 #include <CGAL/number_utils.h>
 #include <boost/property_map/property_map.hpp>
 
 #include <Eigen/Core>
 
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <iterator>
@@ -66,12 +68,37 @@ Double_point checked_point(const Point& p, const char* what, std::size_t i)
   return Double_point(x, y, z);
 }
 
-// The positions of a point range through its map, each checked by checked_point().
+// The positions of a point range through its map, each checked by checked_point(): a range of
+// random access on `threads` threads (0: the default) when every point is sound; otherwise, and
+// for other ranges, in order, so that the message names the first fault whatever the threads.
 template <typename PointRange, typename PointMap>
-std::vector<Double_point> checked_points(const PointRange& range, PointMap point_map)
+std::vector<Double_point> checked_points(const PointRange& range, PointMap point_map, unsigned int threads = 1)
 {
+  const std::size_t n = std::size_t(std::distance(std::begin(range), std::end(range)));
+  typedef typename std::iterator_traits<decltype(std::begin(range))>::iterator_category Category;
+  if constexpr(std::is_convertible<Category, std::random_access_iterator_tag>::value)
+  {
+    if(threads != 1 && n >= 4096)
+    {
+      std::vector<Double_point> result(n);
+      std::atomic<bool> sound(true);
+      const auto first = std::begin(range);
+      for_each_index<Parallel_if_available_tag>(n, threads, [] { return 0; }, [&](std::size_t i, int) {
+        try
+        {
+          result[i] = checked_point(get(point_map, *(first + std::ptrdiff_t(i))), "point", i);
+        }
+        catch(const std::invalid_argument&)
+        {
+          sound.store(false, std::memory_order_relaxed);
+        }
+      }, 4096);
+      if(sound.load())
+        return result;
+    }
+  }
   std::vector<Double_point> result;
-  result.reserve(std::size_t(std::distance(std::begin(range), std::end(range))));
+  result.reserve(n);
   for(const auto& item : range)
     result.push_back(checked_point(get(point_map, item), "point", result.size()));
   return result;
