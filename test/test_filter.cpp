@@ -846,6 +846,36 @@ TEST_CASE("orient_normals_by_spanning_forest: the forest of the total order, on 
   CHECK(oriented[29 * 25].second.z() > 0.);
 }
 
+TEST_CASE("orient_normals_by_spanning_forest: past 2^15 points the reversed rows in blocks, the same forest",
+          "[normals][orientation]")
+{
+  // two wavy sheets of 130 x 130 points, signs at random: the reversed rows are built in one block
+  // per thread (at most 8) above 2^15 points
+  std::mt19937_64 rng(5);
+  std::bernoulli_distribution flip(0.5);
+  Points points;
+  for(int sheet = 0; sheet < 2; ++sheet)
+    for(int x = 0; x < 130; ++x)
+      for(int y = 0; y < 130; ++y)
+      {
+        const double z = 3. * std::sin(0.1 * x) * std::cos(0.07 * y);
+        Eigen::Vector3d n(-0.3 * std::cos(0.1 * x) * std::cos(0.07 * y), 0.21 * std::sin(0.1 * x) * std::sin(0.07 * y), 1.);
+        n.normalize();
+        if(flip(rng))
+          n = -n;
+        points.emplace_back(Point(x, y + 1000. * sheet, z), Vector(n.x(), n.y(), n.z()));
+      }
+  REQUIRE(points.size() > (std::size_t(1) << 15));
+  const std::vector<Vector> expected = kruskal_oriented_normals(points, 8);
+  for(unsigned int threads : {1u, 2u, 3u, 9u})
+  {
+    Points oriented = points;
+    CHECK(SN::orient_normals_by_spanning_forest<SN::Parallel_if_available_tag>(
+            oriented, 8, SNP::number_of_threads(threads, maps())) == 2);
+    CHECK(normals_of(oriented) == expected);
+  }
+}
+
 TEST_CASE("orient_normals_towards_viewpoint: every normal faces the scanner", "[normals][orientation]")
 {
   Points points = wavy_surface(500, 6);
