@@ -235,15 +235,26 @@ void append_anchored_cgal_features(const SN::Oriented_point_set& model, unsigned
   for(const auto& f : features)
     columns.push_back(Feature_column{f.first, {}});
   const std::ptrdiff_t count = std::ptrdiff_t(features.size());
+  std::vector<std::exception_ptr> failures(features.size()); // out of memory, thrown after the loop
 #ifdef _OPENMP
 #pragma omp parallel for schedule(dynamic) num_threads(threads == 0 ? omp_get_max_threads() : int(threads))
 #endif
   for(std::ptrdiff_t c = 0; c < count; ++c)
   {
     std::vector<float>& values = features[std::size_t(c)].second;
-    columns[first + std::size_t(c)].values.assign(values.begin(), values.end());
+    try
+    {
+      columns[first + std::size_t(c)].values.assign(values.begin(), values.end());
+    }
+    catch(...)
+    {
+      failures[std::size_t(c)] = std::current_exception();
+    }
     std::vector<float>().swap(values);
   }
+  for(const std::exception_ptr& failure : failures)
+    if(failure)
+      std::rethrow_exception(failure);
 }
 
 double anchored_cgal_grid_reach(const Feature_options& o)

@@ -64,8 +64,27 @@ void append_point_features(std::size_t n, const Record& record, const std::vecto
 {
   const std::size_t first = columns.size();
   for(SN::Point_feature f : which)
-    columns.push_back({SN::point_feature_name(f) + suffix, std::vector<double>(n)});
-  const std::ptrdiff_t count = std::ptrdiff_t(n);
+    columns.push_back({SN::point_feature_name(f) + suffix, {}});
+  const std::ptrdiff_t width = std::ptrdiff_t(which.size()), count = std::ptrdiff_t(n);
+  // the columns' first touch (a zero fill) a column per thread; out of memory is thrown here
+  std::vector<std::exception_ptr> failures(which.size());
+#ifdef _OPENMP
+#pragma omp parallel for schedule(dynamic) num_threads(threads == 0 ? omp_get_max_threads() : int(threads))
+#endif
+  for(std::ptrdiff_t k = 0; k < width; ++k)
+  {
+    try
+    {
+      columns[first + std::size_t(k)].values.resize(n);
+    }
+    catch(...)
+    {
+      failures[std::size_t(k)] = std::current_exception();
+    }
+  }
+  for(const std::exception_ptr& failure : failures)
+    if(failure)
+      std::rethrow_exception(failure);
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) num_threads(threads == 0 ? omp_get_max_threads() : int(threads))
 #endif
