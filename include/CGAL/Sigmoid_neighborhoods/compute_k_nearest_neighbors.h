@@ -57,12 +57,11 @@ void compute_k_nearest_neighbors(const PointRange& points, unsigned int k, std::
   typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
   if(k < 1)
     throw std::invalid_argument("the number of neighbors k must be at least 1");
+  const unsigned int threads = internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np));
   const std::vector<internal::Double_point> copy =
-    internal::checked_points(points, NP_helper::get_const_point_map(points, np),
-                             internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np)));
+    internal::checked_points(points, NP_helper::get_const_point_map(points, np), threads);
   if(copy.size() > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
     throw std::invalid_argument("compute_k_nearest_neighbors(): more than 2^32 - 1 points");
-  const unsigned int threads = internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np));
   const internal::Neighbor_query query(copy, threads);
   internal::Neighbor_lists rows =
     internal::nearest_neighbor_rows(query, k, threads);

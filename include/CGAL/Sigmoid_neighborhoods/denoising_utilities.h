@@ -50,10 +50,9 @@ double compute_mean_neighbor_distance(const PointRange& points, unsigned int k,
                                       const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
-  const std::vector<internal::Double_point> copy =
-    internal::checked_points(points, NP_helper::get_const_point_map(points, np),
-                             internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np)));
   const unsigned int threads = internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np));
+  const std::vector<internal::Double_point> copy =
+    internal::checked_points(points, NP_helper::get_const_point_map(points, np), threads);
   return internal::mean_neighbor_distance<ConcurrencyTag>(internal::Neighbor_query(copy, threads), k,
                                                           internal::number_of_threads(np));
 }

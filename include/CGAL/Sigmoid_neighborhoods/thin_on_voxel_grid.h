@@ -183,13 +183,12 @@ thin_on_voxel_grid(const PointRange& points, double cell_size, const CGAL_NP_CLA
   typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
   if(!(cell_size > 0.) || !std::isfinite(cell_size))
     throw std::invalid_argument("the cell size must be positive and finite, got " + std::to_string(cell_size));
+  const unsigned int threads = internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np));
   const std::vector<internal::Double_point> copy =
-    internal::checked_points(points, NP_helper::get_const_point_map(points, np),
-                             internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np)));
+    internal::checked_points(points, NP_helper::get_const_point_map(points, np), threads);
   if(copy.size() > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
     throw std::invalid_argument("thin_on_voxel_grid(): more than 2^32 - 1 points");
   const std::size_t n = copy.size();
-  const unsigned int threads = internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np));
   std::vector<internal::Voxel> voxels(n);
   // on the threads; a point beyond the voxels' range is named by a pass in order, the first
   std::atomic<bool> in_range(true);

@@ -80,12 +80,11 @@ OutputIterator compute_anchored_cgal_features(const PointRange& points, float vo
   typedef internal::Double_kernel::Plane_3 Plane;
   if(!(voxel_size > 0.f) || !std::isfinite(voxel_size) || scales < 1)
     throw std::invalid_argument("compute_anchored_cgal_features(): the voxel must be positive and scales >= 1");
+  const unsigned int threads = internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np));
   const std::vector<internal::Double_point> copy =
-    internal::checked_points(points, NP_helper::get_const_point_map(points, np),
-                             internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np)));
+    internal::checked_points(points, NP_helper::get_const_point_map(points, np), threads);
   if(copy.size() > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
     throw std::invalid_argument("compute_anchored_cgal_features(): more than 2^32 - 1 points");
-  const unsigned int threads = internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np));
   const std::size_t n = copy.size();
   const auto no_scratch = [] { return 0; };
   auto column = [&](const std::string& name, unsigned int s, std::vector<float>&& values) {
@@ -193,12 +192,11 @@ std::vector<double> anchored_cgal_neighbor_reach(const PointRange& points, float
                                                  const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
 {
   typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
+  const unsigned int threads = internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np));
   const std::vector<internal::Double_point> copy =
-    internal::checked_points(points, NP_helper::get_const_point_map(points, np),
-                             internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np)));
+    internal::checked_points(points, NP_helper::get_const_point_map(points, np), threads);
   if(first > last || last > copy.size())
     throw std::invalid_argument("anchored_cgal_neighbor_reach(): the points first ... last - 1 are not in the set");
-  const unsigned int threads = internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np));
   const std::size_t k = 12;
   std::vector<double> reach(last - first, 0.);
   float voxel = voxel_size;
