@@ -31,6 +31,7 @@
 #include <limits>
 #include <numeric>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -878,6 +879,58 @@ TEST_CASE("caller-computed neighborhoods: checked on threads, the first fault na
     CHECK(message(indices, offsets, threads) == "sound");
     CHECK(message(two_faults, offsets, threads) == "neighborhood of point 4200: index 5000 is out of range (5000 points)");
     CHECK(message(indices, past_end, threads) == "the neighbor offsets must not decrease (at point 2001)");
+  }
+}
+
+TEST_CASE("for_each_index_in_blocks: results in order, and an exception of the smallest index, on any thread count",
+          "[threads]")
+{
+  const std::size_t n = 10000; // several blocks of 1,024 points per thread
+  struct Compute_error : std::runtime_error
+  {
+    using std::runtime_error::runtime_error;
+  };
+  struct Sink_error : std::runtime_error
+  {
+    using std::runtime_error::runtime_error;
+  };
+  // compute(i) = 3 i + 1, throwing at `compute_fails`; the sink records the indices it is given and
+  // throws at `sink_fails`
+  auto run = [&](unsigned int threads, std::size_t compute_fails, std::size_t sink_fails, std::vector<std::size_t>& sunk) {
+    sunk.clear();
+    SN::internal::for_each_index_in_blocks<SN::Parallel_if_available_tag, std::size_t>(
+      n, threads, [] { return std::vector<int>(8); },
+      [&](std::size_t i, std::vector<int>& scratch) {
+        scratch[i % 8] = int(i); // a scratch per thread, whatever it holds
+        if(i == compute_fails)
+          throw Compute_error("compute " + std::to_string(i));
+        return 3 * i + 1;
+      },
+      [&](std::size_t i, std::size_t result) {
+        if(i == sink_fails)
+          throw Sink_error("sink " + std::to_string(i));
+        CHECK(result == 3 * i + 1);
+        sunk.push_back(i);
+      });
+  };
+  const std::size_t none = std::size_t(-1);
+  for(unsigned int threads : {1u, 2u, 3u})
+  {
+    std::vector<std::size_t> sunk;
+    run(threads, none, none, sunk);
+    std::vector<std::size_t> all(n);
+    std::iota(all.begin(), all.end(), std::size_t(0));
+    CHECK(sunk == all);
+    // a result that fails: the blocks before its block are given, none after
+    const std::size_t block = 1024 * threads, failing = 5000, given = failing / block * block;
+    CHECK_THROWS_WITH(run(threads, failing, none, sunk), "compute 5000");
+    CHECK(sunk == std::vector<std::size_t>(all.begin(), all.begin() + std::ptrdiff_t(given)));
+    // a sink that fails: what came before it, then its exception
+    CHECK_THROWS_AS(run(threads, none, 3000, sunk), Sink_error);
+    CHECK(sunk == std::vector<std::size_t>(all.begin(), all.begin() + 3000));
+    // both: the smaller index's
+    CHECK_THROWS_WITH(run(threads, 4500, 3000, sunk), "sink 3000");
+    CHECK_THROWS_WITH(run(threads, 2500, 3000, sunk), "compute 2500");
   }
 }
 

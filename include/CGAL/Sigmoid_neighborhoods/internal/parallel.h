@@ -169,12 +169,96 @@ constexpr std::size_t BLOCK_SIZE_PER_THREAD = 1024;
 
 // The same over blocks of indices: `compute(i, scratch)` returns the result of index i, and
 // `sink(i, result)` receives the results in index order, one block at a time, so that memory
-// holds one block of results rather than all of them.
+// holds two blocks of results rather than all of them. Under OpenMP one parallel region serves
+// every block: while the threads compute a block, one of them hands the previous block to the
+// sink, then joins them, and each thread keeps one scratch for the whole call. An exception is
+// rethrown to the caller, the one of the smallest index (a sink's at the index it was given); the
+// results before the block where it happened are given to the sink, as in one pass.
 template <typename ConcurrencyTag, typename Result, typename MakeScratch, typename Compute, typename Sink>
 void for_each_index_in_blocks(std::size_t n, unsigned int threads, const MakeScratch& make_scratch,
                               const Compute& compute, const Sink& sink)
 {
-  const std::size_t block = BLOCK_SIZE_PER_THREAD * thread_count<ConcurrencyTag>(threads);
+  const std::size_t thread_number = thread_count<ConcurrencyTag>(threads);
+  const std::size_t block = BLOCK_SIZE_PER_THREAD * thread_number;
+#if defined(_OPENMP)
+  if(is_parallel<ConcurrencyTag>() && thread_number > 1 && n > block)
+  {
+    typedef decltype(make_scratch()) Scratch;
+    const std::size_t blocks = (n + block - 1) / block;
+    std::vector<Result> results[2] = {std::vector<Result>(block), std::vector<Result>(block)};
+    std::exception_ptr error;
+    std::atomic<std::int64_t> error_index((std::numeric_limits<std::int64_t>::max)());
+    auto record = [&](std::int64_t i) {
+#pragma omp critical(sigmoid_neighborhoods_exception)
+      if(i < error_index.load())
+      {
+        error_index.store(i);
+        error = std::current_exception();
+      }
+    };
+    const std::int64_t grain = 16;
+#pragma omp parallel num_threads(static_cast<int>(thread_number))
+    {
+      std::optional<Scratch> scratch;
+      try
+      {
+        scratch.emplace(make_scratch());
+      }
+      catch(...)
+      {
+        record(-1);
+      }
+      // Iteration b computes block b and sinks block b - 1. Every thread meets the same
+      // worksharing constructs in every iteration: after an error the work is skipped, not the
+      // constructs.
+      for(std::size_t b = 0; b <= blocks; ++b)
+      {
+#pragma omp single nowait
+        if(b > 0)
+        {
+          const std::size_t start = (b - 1) * block, count = (std::min)(block, n - start);
+          // the previous block was computed whole, or an error below its end was recorded
+          if(error_index.load() >= std::int64_t(start + count))
+          {
+            const std::vector<Result>& done = results[(b - 1) % 2];
+            for(std::size_t i = 0; i < count; ++i)
+            {
+              try
+              {
+                sink(start + i, done[i]);
+              }
+              catch(...)
+              {
+                record(std::int64_t(start + i));
+                break;
+              }
+            }
+          }
+        }
+        const std::size_t start = b * block;
+        const std::int64_t count = b < blocks ? std::int64_t((std::min)(block, n - start)) : 0;
+        std::vector<Result>& current = results[b % 2];
+#pragma omp for schedule(dynamic, grain)
+        for(std::int64_t i = 0; i < count; ++i)
+        {
+          if(error_index.load(std::memory_order_relaxed) != (std::numeric_limits<std::int64_t>::max)())
+            continue;
+          try
+          {
+            current[std::size_t(i)] = compute(start + std::size_t(i), *scratch);
+          }
+          catch(...)
+          {
+            record(std::int64_t(start) + i);
+          }
+        }
+      }
+    }
+    if(error)
+      std::rethrow_exception(error);
+    return;
+  }
+#endif
   std::vector<Result> results;
   for(std::size_t start = 0; start < n; start += block)
   {
