@@ -217,7 +217,7 @@ void for_each_index_in_blocks(std::size_t n, unsigned int threads, const MakeScr
         if(b > 0)
         {
           const std::size_t start = (b - 1) * block, count = (std::min)(block, n - start);
-          // the previous block was computed whole, or an error below its end was recorded
+          // given only when no error came before its end: then its results are whole
           if(error_index.load() >= std::int64_t(start + count))
           {
             const std::vector<Result>& done = results[(b - 1) % 2];
