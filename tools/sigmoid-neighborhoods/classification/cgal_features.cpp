@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 
 #include "cgal_features.h"
+#include "for_each_item.h"
 
 #include <CGAL/Sigmoid_neighborhoods/Classification/compute_anchored_cgal_features.h>
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
@@ -20,10 +21,12 @@
 #endif
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
+#include <cstddef>
+#include <iterator>
 #include <memory>
-#include <thread>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace sigmoid_tool {
 
@@ -72,37 +75,6 @@ struct Scale
   float radius_neighbors() const { return voxel_size * 3; }
   float radius_dtm() const { return voxel_size * 10; }
 };
-
-// Runs body(s) for s in [first, last) on up to `threads` threads; the first exception is rethrown.
-template <typename Body>
-void for_each_scale(std::size_t first, std::size_t last, unsigned int threads, const Body& body)
-{
-  const std::size_t count = last - first;
-  std::size_t workers = threads != 0 ? threads : std::max(1u, std::thread::hardware_concurrency());
-  workers = std::min(workers, count);
-  std::atomic<std::size_t> next(first);
-  std::vector<std::exception_ptr> errors(count);
-  auto work = [&] {
-    for(std::size_t s = next++; s < last; s = next++)
-      try
-      {
-        body(s);
-      }
-      catch(...)
-      {
-        errors[s - first] = std::current_exception();
-      }
-  };
-  std::vector<std::thread> pool;
-  for(std::size_t w = 1; w < workers; ++w)
-    pool.emplace_back(work);
-  work();
-  for(std::thread& t : pool)
-    t.join();
-  for(const std::exception_ptr& e : errors)
-    if(e)
-      std::rethrow_exception(e);
-}
 
 // The features' values, a column per thread at a time (each value depends on its point alone).
 void append_columns(const CGAL::Classification::Feature_set& features, std::size_t size, unsigned int threads,
@@ -179,7 +151,7 @@ void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scal
   if(!grid_only)
   {
     // the neighborhoods (a kd-tree, a voxel grid) side by side, then each scale's points on every thread
-    for_each_scale(first_parallel, scales.size(), threads,
+    for_each_item(first_parallel, scales.size(), threads,
                    [&](std::size_t s) { scales[s].build_neighborhood(points, s == 0); });
     for(std::size_t s = first_parallel; s < scales.size(); ++s)
       scales[s].build_eigen(points, Per_point_tag());
@@ -234,27 +206,11 @@ void append_anchored_cgal_features(const SN::Oriented_point_set& model, unsigned
   const std::size_t first = columns.size();
   for(const auto& f : features)
     columns.push_back(Feature_column{f.first, {}});
-  const std::ptrdiff_t count = std::ptrdiff_t(features.size());
-  std::vector<std::exception_ptr> failures(features.size()); // out of memory, thrown after the loop
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic) num_threads(threads == 0 ? omp_get_max_threads() : int(threads))
-#endif
-  for(std::ptrdiff_t c = 0; c < count; ++c)
-  {
-    std::vector<float>& values = features[std::size_t(c)].second;
-    try
-    {
-      columns[first + std::size_t(c)].values.assign(values.begin(), values.end());
-    }
-    catch(...)
-    {
-      failures[std::size_t(c)] = std::current_exception();
-    }
+  for_each_item(0, features.size(), threads, [&](std::size_t c) {
+    std::vector<float>& values = features[c].second;
+    columns[first + c].values.assign(values.begin(), values.end());
     std::vector<float>().swap(values);
-  }
-  for(const std::exception_ptr& failure : failures)
-    if(failure)
-      std::rethrow_exception(failure);
+  });
 }
 
 double anchored_cgal_grid_reach(const Feature_options& o)

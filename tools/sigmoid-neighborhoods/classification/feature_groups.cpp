@@ -7,6 +7,7 @@
 #include "feature_groups.h"
 
 #include "cgal_features.h"
+#include "for_each_item.h"
 #include "../command_line.h"
 #include "../optimal_command.h"
 
@@ -65,26 +66,9 @@ void append_point_features(std::size_t n, const Record& record, const std::vecto
   const std::size_t first = columns.size();
   for(SN::Point_feature f : which)
     columns.push_back({SN::point_feature_name(f) + suffix, {}});
-  const std::ptrdiff_t width = std::ptrdiff_t(which.size()), count = std::ptrdiff_t(n);
-  // the columns' first touch (a zero fill) a column per thread; out of memory is thrown here
-  std::vector<std::exception_ptr> failures(which.size());
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic) num_threads(threads == 0 ? omp_get_max_threads() : int(threads))
-#endif
-  for(std::ptrdiff_t k = 0; k < width; ++k)
-  {
-    try
-    {
-      columns[first + std::size_t(k)].values.resize(n);
-    }
-    catch(...)
-    {
-      failures[std::size_t(k)] = std::current_exception();
-    }
-  }
-  for(const std::exception_ptr& failure : failures)
-    if(failure)
-      std::rethrow_exception(failure);
+  const std::ptrdiff_t count = std::ptrdiff_t(n);
+  // the columns' first touch (a zero fill) a column per thread
+  for_each_item(first, columns.size(), threads, [&](std::size_t c) { columns[c].values.resize(n); });
 #ifdef _OPENMP
 #pragma omp parallel for schedule(static) num_threads(threads == 0 ? omp_get_max_threads() : int(threads))
 #endif
@@ -318,26 +302,8 @@ void compute_pyramid(Feature_group_input& in, bool sigmoid, std::vector<Feature_
   {
     // the heights of the cell sizes side by side: each one pass over the points into a map of cells
     std::vector<std::vector<Feature_column>> heights(cells.size());
-    std::vector<std::exception_ptr> failures(cells.size());
-    const std::ptrdiff_t count = std::ptrdiff_t(cells.size());
-#ifdef _OPENMP
-#pragma omp parallel for schedule(dynamic) num_threads(o.threads == 0 ? omp_get_max_threads() : int(o.threads))
-#endif
-    for(std::ptrdiff_t c = 0; c < count; ++c)
-    {
-      try
-      {
-        append_height_features(model, cells[std::size_t(c)], pyramid_suffix(cells[std::size_t(c)]),
-                               heights[std::size_t(c)]);
-      }
-      catch(...)
-      {
-        failures[std::size_t(c)] = std::current_exception();
-      }
-    }
-    for(const std::exception_ptr& failure : failures)
-      if(failure)
-        std::rethrow_exception(failure); // the first cell size's, whatever the threads
+    for_each_item(0, cells.size(), o.threads,
+                  [&](std::size_t c) { append_height_features(model, cells[c], pyramid_suffix(cells[c]), heights[c]); });
     for(std::vector<Feature_column>& h : heights)
       for(Feature_column& column : h)
         columns.push_back(std::move(column));

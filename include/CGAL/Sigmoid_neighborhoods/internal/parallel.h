@@ -76,6 +76,37 @@ unsigned int kernel_threads(unsigned int requested)
   return is_parallel<ConcurrencyTag>() ? requested : 1u;
 }
 
+// The exception of the smallest index among those thrown in an OpenMP region, each caught where it
+// is thrown (an exception must not leave the region); -1 for a thread's scratch.
+class Smallest_index_exception
+{
+public:
+  void record(std::int64_t i)
+  {
+#if defined(_OPENMP)
+#pragma omp critical(sigmoid_neighborhoods_exception)
+#endif
+    if(i < m_index.load())
+    {
+      m_index.store(i);
+      m_error = std::current_exception();
+    }
+  }
+  bool any() const { return m_index.load(std::memory_order_relaxed) != NONE; }
+  // whether one was recorded below `end`
+  bool before(std::int64_t end) const { return m_index.load() < end; }
+  void rethrow_if_any() const
+  {
+    if(m_error)
+      std::rethrow_exception(m_error);
+  }
+
+private:
+  static constexpr std::int64_t NONE = (std::numeric_limits<std::int64_t>::max)();
+  std::exception_ptr m_error;
+  std::atomic<std::int64_t> m_index{NONE};
+};
+
 // Runs `body(i, scratch)` for i in [0, n) on `threads` threads (0: the default), with one
 // `Scratch` per thread built by `make_scratch()`. Every index is processed by one call whose
 // result depends on `i` only, so the outcome is the same, bit for bit, for any number of threads.
@@ -92,20 +123,8 @@ void for_each_index(std::size_t n, unsigned int threads, const MakeScratch& make
   {
     typedef decltype(make_scratch()) Scratch;
     const std::int64_t count = static_cast<std::int64_t>(n);
-    std::exception_ptr error;
-    std::int64_t error_index = (std::numeric_limits<std::int64_t>::max)();
-    std::atomic<bool> failed(false);
-    // An exception must not leave an OpenMP region: each is caught where it is thrown, recorded,
-    // and the remaining indices are skipped.
-    auto record = [&](std::int64_t i) {
-#pragma omp critical(sigmoid_neighborhoods_exception)
-      if(i < error_index)
-      {
-        error_index = i;
-        error = std::current_exception();
-      }
-      failed.store(true, std::memory_order_relaxed);
-    };
+    // after an exception the remaining indices are skipped
+    Smallest_index_exception errors;
 #pragma omp parallel num_threads(static_cast<int>(thread_number))
     {
       std::optional<Scratch> scratch;
@@ -115,13 +134,13 @@ void for_each_index(std::size_t n, unsigned int threads, const MakeScratch& make
       }
       catch(...)
       {
-        record(-1);
+        errors.record(-1);
       }
       // every thread reaches the worksharing loop, even one whose scratch failed
 #pragma omp for schedule(dynamic, static_cast<int>(grain))
       for(std::int64_t i = 0; i < count; ++i)
       {
-        if(failed.load(std::memory_order_relaxed))
+        if(errors.any())
           continue;
         try
         {
@@ -129,12 +148,11 @@ void for_each_index(std::size_t n, unsigned int threads, const MakeScratch& make
         }
         catch(...)
         {
-          record(i);
+          errors.record(i);
         }
       }
     }
-    if(error)
-      std::rethrow_exception(error);
+    errors.rethrow_if_any();
     return;
   }
 #elif defined(CGAL_LINKED_WITH_TBB)
@@ -186,16 +204,7 @@ void for_each_index_in_blocks(std::size_t n, unsigned int threads, const MakeScr
     typedef decltype(make_scratch()) Scratch;
     const std::size_t blocks = (n + block - 1) / block;
     std::vector<Result> results[2] = {std::vector<Result>(block), std::vector<Result>(block)};
-    std::exception_ptr error;
-    std::atomic<std::int64_t> error_index((std::numeric_limits<std::int64_t>::max)());
-    auto record = [&](std::int64_t i) {
-#pragma omp critical(sigmoid_neighborhoods_exception)
-      if(i < error_index.load())
-      {
-        error_index.store(i);
-        error = std::current_exception();
-      }
-    };
+    Smallest_index_exception errors;
     const std::int64_t grain = 16;
 #pragma omp parallel num_threads(static_cast<int>(thread_number))
     {
@@ -206,7 +215,7 @@ void for_each_index_in_blocks(std::size_t n, unsigned int threads, const MakeScr
       }
       catch(...)
       {
-        record(-1);
+        errors.record(-1);
       }
       // Iteration b computes block b and sinks block b - 1. Every thread meets the same
       // worksharing constructs in every iteration: after an error the work is skipped, not the
@@ -218,7 +227,7 @@ void for_each_index_in_blocks(std::size_t n, unsigned int threads, const MakeScr
         {
           const std::size_t start = (b - 1) * block, count = (std::min)(block, n - start);
           // given only when no error came before its end: then its results are whole
-          if(error_index.load() >= std::int64_t(start + count))
+          if(!errors.before(std::int64_t(start + count)))
           {
             const std::vector<Result>& done = results[(b - 1) % 2];
             for(std::size_t i = 0; i < count; ++i)
@@ -229,7 +238,7 @@ void for_each_index_in_blocks(std::size_t n, unsigned int threads, const MakeScr
               }
               catch(...)
               {
-                record(std::int64_t(start + i));
+                errors.record(std::int64_t(start + i));
                 break;
               }
             }
@@ -241,7 +250,7 @@ void for_each_index_in_blocks(std::size_t n, unsigned int threads, const MakeScr
 #pragma omp for schedule(dynamic, grain)
         for(std::int64_t i = 0; i < count; ++i)
         {
-          if(error_index.load(std::memory_order_relaxed) != (std::numeric_limits<std::int64_t>::max)())
+          if(errors.any())
             continue;
           try
           {
@@ -249,13 +258,12 @@ void for_each_index_in_blocks(std::size_t n, unsigned int threads, const MakeScr
           }
           catch(...)
           {
-            record(std::int64_t(start) + i);
+            errors.record(std::int64_t(start) + i);
           }
         }
       }
     }
-    if(error)
-      std::rethrow_exception(error);
+    errors.rethrow_if_any();
     return;
   }
 #endif
