@@ -5,13 +5,18 @@
 // sets read from their records against CGAL's point set reader, and the tool's text rows (the
 // shortest text of each double) read back to the same doubles, the same bytes for any thread count.
 
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/is_polygon_mesh.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_binary_ply_points.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_polygon_soup.h>
 
 #include "test_scratch.h"
 #include "text_rows.h"
 
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
 #include <catch2/catch.hpp>
+
+#include <algorithm>
 
 #include <cmath>
 #include <cstdint>
@@ -220,4 +225,114 @@ TEST_CASE("text rows: the shortest text reads back to the same double, the same 
     rows.number(std::numeric_limits<double>::infinity()).put(',').number(0.1).put(',').number(1e-5);
   });
   CHECK(special.str() == "inf,0.1,1e-05");
+}
+
+namespace {
+
+typedef std::vector<std::vector<std::size_t>> Polygons;
+
+// The eight faces of an octahedron on vertices `first` to `first + 5`, outward.
+void add_octahedron(Polygons& polygons, std::size_t first)
+{
+  const std::size_t faces[8][3] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  for(const auto& f : faces)
+    polygons.push_back({first + f[0], first + f[1], first + f[2]});
+}
+
+bool cgal_says_mesh(const Polygons& polygons)
+{
+  return CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons);
+}
+
+} // namespace
+
+TEST_CASE("is_polygon_mesh: the answer of CGAL's check on the cases it refuses", "[io][mesh][parallel]")
+{
+  Polygons closed;
+  add_octahedron(closed, 0);
+  Polygons two_cones = closed; // two octahedra sharing vertex 0: a singular vertex
+  add_octahedron(two_cones, 6);
+  for(auto& p : two_cones)
+    for(auto& v : p)
+      if(v == 6)
+        v = 0;
+  Polygons flipped = closed;
+  std::reverse(flipped[3].begin(), flipped[3].end());
+  Polygons open_fan = closed;
+  open_fan.erase(open_fan.begin() + 5); // a hole: every vertex still one fan
+  const Polygons bowtie{{0, 1, 2}, {0, 3, 4}};
+  const Polygons repeated_corner{{0, 1, 0, 2}};
+  const Polygons two_corners{{0, 1}, {0, 1, 2}};
+  Polygons twice = closed;
+  twice.push_back(closed[2]);
+  const Polygons quad_and_triangles{{0, 1, 2, 3}, {1, 0, 4}, {2, 1, 4}, {3, 2, 4}, {0, 3, 4}};
+
+  const std::vector<std::pair<const char*, const Polygons*>> cases{
+    {"closed", &closed},   {"two cones", &two_cones},        {"flipped", &flipped},
+    {"open fan", &open_fan}, {"bowtie", &bowtie},           {"repeated corner", &repeated_corner},
+    {"two corners", &two_corners}, {"face twice", &twice}, {"quad and triangles", &quad_and_triangles}};
+  const std::vector<bool> expected{true, false, false, true, false, false, false, false, true};
+  for(std::size_t c = 0; c < cases.size(); ++c)
+    for(unsigned int threads = 1; threads <= 3; ++threads)
+    {
+      INFO(cases[c].first << " on " << threads << " threads");
+      CHECK(cgal_says_mesh(*cases[c].second) == expected[c]);
+      CHECK(SN::internal::is_polygon_mesh(*cases[c].second, threads) == expected[c]);
+    }
+  CHECK(SN::internal::is_polygon_mesh(Polygons()));
+}
+
+TEST_CASE("is_polygon_mesh: CGAL's answer on random soups of glued, cut and flipped octahedra", "[io][mesh][parallel]")
+{
+  std::mt19937 rng(7);
+  std::size_t meshes = 0, rounds = 20000;
+  for(std::size_t round = 0; round < rounds; ++round)
+  {
+    Polygons polygons;
+    const std::size_t copies = 1 + rng() % 3;
+    for(std::size_t c = 0; c < copies; ++c)
+      add_octahedron(polygons, 6 * c);
+    if(rng() % 4 == 0) // a quad
+    {
+      polygons[0] = {0, 2, 1, 4};
+      polygons.erase(polygons.begin() + 1);
+    }
+    std::vector<std::size_t> relabel(6 * copies);
+    for(std::size_t i = 0; i < relabel.size(); ++i)
+      relabel[i] = i;
+    for(std::size_t g = rng() % 3; g > 0; --g) // glued vertices
+      relabel[rng() % relabel.size()] = rng() % relabel.size();
+    for(auto& p : polygons)
+      for(auto& v : p)
+        v = relabel[v];
+    for(std::size_t d = rng() % 4; d > 0 && !polygons.empty(); --d)
+      polygons.erase(polygons.begin() + std::ptrdiff_t(rng() % polygons.size()));
+    if(rng() % 3 == 0 && !polygons.empty())
+    {
+      auto& p = polygons[rng() % polygons.size()];
+      std::reverse(p.begin(), p.end());
+    }
+    if(rng() % 10 == 0 && !polygons.empty())
+      polygons.push_back(polygons[rng() % polygons.size()]);
+    std::shuffle(polygons.begin(), polygons.end(), rng);
+    for(auto& p : polygons)
+      std::rotate(p.begin(), p.begin() + std::ptrdiff_t(rng() % p.size()), p.end());
+    const bool expected = cgal_says_mesh(polygons);
+    meshes += expected;
+    const unsigned int threads = unsigned(1 + round % 3);
+    if(SN::internal::is_polygon_mesh(polygons, threads) != expected)
+    {
+      std::ostringstream soup;
+      for(const auto& p : polygons)
+      {
+        for(std::size_t v : p)
+          soup << v << ' ';
+        soup << "| ";
+      }
+      FAIL("round " << round << ", " << threads << " threads: CGAL says " << expected << " for " << soup.str());
+    }
+  }
+  // both answers are common
+  CHECK(meshes > rounds / 10);
+  CHECK(meshes < rounds * 9 / 10);
 }

@@ -9,6 +9,7 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/check_points.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/is_polygon_mesh.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/merge_equal_positions.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_polygon_soup.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/mesh_points.h>
@@ -43,7 +44,8 @@ inline void check_soup(const Polygon_soup& soup)
 
 // A mesh to points (SPEC §1): one point per vertex with a face, vertices at one position merged
 // into the first of them, normals from CGAL's vertex normals of the faces that keep three corners.
-inline void mesh_to_points(const Polygon_soup& soup, Oriented_point_set& out)
+// The check of the faces runs on `threads` threads (0: the default).
+inline void mesh_to_points(const Polygon_soup& soup, Oriented_point_set& out, unsigned int threads = 0)
 {
   typedef Oriented_point_set::Point_3 Point_3;
   namespace PMP = CGAL::Polygon_mesh_processing;
@@ -82,9 +84,9 @@ inline void mesh_to_points(const Polygon_soup& soup, Oriented_point_set& out)
     throw Input_error("no face with three distinct corners");
   // Non-manifold or inconsistently oriented faces: CGAL orients them, splitting vertices where needed;
   // the split copies share a position and are merged again below.
-  if(!PMP::is_polygon_soup_a_polygon_mesh(faces))
+  if(!is_polygon_mesh(faces, threads))
     PMP::orient_polygon_soup(distinct, faces);
-  if(!PMP::is_polygon_soup_a_polygon_mesh(faces))
+  if(!is_polygon_mesh(faces, threads))
     throw Input_error("the faces do not form a polygon mesh, even after orientation");
   CGAL::Surface_mesh<Point_3> mesh;
   PMP::polygon_soup_to_polygon_mesh(distinct, faces, mesh);

@@ -62,7 +62,7 @@ read_oriented_point_set(const std::string& filename, const Normal_options& optio
     internal::read_polygon_soup(file, soup);
     if(!soup.polygons.empty())
     {
-      internal::mesh_to_points(soup, out);
+      internal::mesh_to_points(soup, out, options.threads);
       if(estimate_anyway)
         internal::estimate_normals(out, options);
       return out;

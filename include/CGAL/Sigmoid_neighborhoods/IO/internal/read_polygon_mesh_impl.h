@@ -14,6 +14,7 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/input_file.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/is_polygon_mesh.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/mesh_to_points.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_polygon_soup.h>
 
@@ -41,7 +42,7 @@ read_polygon_mesh(const std::string& filename, CGAL::Surface_mesh<Oriented_point
   internal::check_soup(soup);
   PMP::repair_polygon_soup(soup.points, soup.polygons);
   PMP::orient_polygon_soup(soup.points, soup.polygons);
-  if(!PMP::is_polygon_soup_a_polygon_mesh(soup.polygons))
+  if(!internal::is_polygon_mesh(soup.polygons))
     throw Input_error("the faces do not form a polygon mesh, even after orientation");
   PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
   PMP::remove_isolated_vertices(mesh);
