@@ -336,3 +336,34 @@ TEST_CASE("is_polygon_mesh: CGAL's answer on random soups of glued, cut and flip
   CHECK(meshes > rounds / 10);
   CHECK(meshes < rounds * 9 / 10);
 }
+
+TEST_CASE("is_polygon_mesh: CGAL's answer on a torus of 28,800 triangles, cut, glued and flipped, on 1-3 threads",
+          "[io][mesh][parallel]")
+{
+  const std::size_t n = 120;
+  auto vertex = [&](std::size_t i, std::size_t j) { return (i % n) * n + (j % n); };
+  Polygons torus;
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; j < n; ++j)
+    {
+      torus.push_back({vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1)});
+      torus.push_back({vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1)});
+    }
+  REQUIRE(3 * torus.size() >= SN::internal::PARALLEL_MESH_CHECK_CORNERS);
+  Polygons cut = torus;
+  cut.erase(cut.begin() + 1000);
+  Polygons glued = torus; // two vertices far apart made one: a singular vertex
+  for(auto& p : glued)
+    for(auto& v : p)
+      if(v == vertex(n / 2, n / 2))
+        v = vertex(0, 0);
+  Polygons flipped = torus;
+  std::reverse(flipped[5000].begin(), flipped[5000].end());
+  const std::vector<std::pair<const Polygons*, bool>> cases{{&torus, true}, {&cut, true}, {&glued, false}, {&flipped, false}};
+  for(const auto& c : cases)
+  {
+    CHECK(cgal_says_mesh(*c.first) == c.second);
+    for(unsigned int threads = 1; threads <= 3; ++threads)
+      CHECK(SN::internal::is_polygon_mesh(*c.first, threads) == c.second);
+  }
+}

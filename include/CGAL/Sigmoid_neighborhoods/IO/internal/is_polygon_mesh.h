@@ -20,6 +20,10 @@ namespace CGAL {
 namespace Sigmoid_neighborhoods {
 namespace internal {
 
+// Fewer corners than this are checked on one thread: a region would cost more than it saves, and a
+// forked child (the readers' limit tests) cannot start one.
+constexpr std::size_t PARALLEL_MESH_CHECK_CORNERS = std::size_t(1) << 15;
+
 // A corner of a polygon seen from its vertex: the vertices before and after it in the polygon.
 struct Vertex_corner
 {
@@ -82,51 +86,53 @@ bool is_polygon_mesh(const PolygonRange& polygons, unsigned int threads = 0)
     std::vector<std::pair<std::size_t, std::size_t>> by_next, by_previous;
   };
   std::atomic<bool> is_mesh{true};
-  for_each_index<Parallel_if_available_tag>(
-    vertex_count, threads, [] { return Scratch(); },
-    [&](std::size_t v, Scratch& s) {
-      const std::size_t begin = first_corner[v], degree = first_corner[v + 1] - begin;
-      if(degree == 0 || !is_mesh.load(std::memory_order_relaxed))
-        return;
-      s.by_next.clear();
-      s.by_previous.clear();
-      for(std::size_t i = 0; i < degree; ++i)
+  auto check_vertex = [&](std::size_t v, Scratch& s) {
+    const std::size_t begin = first_corner[v], degree = first_corner[v + 1] - begin;
+    if(degree == 0 || !is_mesh.load(std::memory_order_relaxed))
+      return;
+    s.by_next.clear();
+    s.by_previous.clear();
+    for(std::size_t i = 0; i < degree; ++i)
+    {
+      s.by_next.emplace_back(corners[begin + i].next, i);
+      s.by_previous.emplace_back(corners[begin + i].previous, i);
+    }
+    std::sort(s.by_next.begin(), s.by_next.end());
+    std::sort(s.by_previous.begin(), s.by_previous.end());
+    for(std::size_t i = 1; i < degree; ++i)
+      if(s.by_next[i].first == s.by_next[i - 1].first || s.by_previous[i].first == s.by_previous[i - 1].first)
       {
-        s.by_next.emplace_back(corners[begin + i].next, i);
-        s.by_previous.emplace_back(corners[begin + i].previous, i);
+        is_mesh.store(false, std::memory_order_relaxed);
+        return;
       }
-      std::sort(s.by_next.begin(), s.by_next.end());
-      std::sort(s.by_previous.begin(), s.by_previous.end());
-      for(std::size_t i = 1; i < degree; ++i)
-        if(s.by_next[i].first == s.by_next[i - 1].first || s.by_previous[i].first == s.by_previous[i - 1].first)
+    auto find = [](const std::vector<std::pair<std::size_t, std::size_t>>& keys, std::size_t key) {
+      const auto it = std::lower_bound(keys.begin(), keys.end(), std::make_pair(key, std::size_t(0)));
+      return (it != keys.end() && it->first == key) ? it->second : std::size_t(-1);
+    };
+    // The start of the fan: a corner without predecessor, at most one; any corner if it is closed.
+    std::size_t start = 0, starts = 0;
+    for(std::size_t i = 0; i < degree; ++i)
+      if(find(s.by_next, corners[begin + i].previous) == std::size_t(-1))
+      {
+        start = i;
+        if(++starts > 1)
         {
           is_mesh.store(false, std::memory_order_relaxed);
           return;
         }
-      auto find = [](const std::vector<std::pair<std::size_t, std::size_t>>& keys, std::size_t key) {
-        const auto it = std::lower_bound(keys.begin(), keys.end(), std::make_pair(key, std::size_t(0)));
-        return (it != keys.end() && it->first == key) ? it->second : std::size_t(-1);
-      };
-      // The start of the fan: a corner without predecessor, at most one; any corner if it is closed.
-      std::size_t start = 0, starts = 0;
-      for(std::size_t i = 0; i < degree; ++i)
-        if(find(s.by_next, corners[begin + i].previous) == std::size_t(-1))
-        {
-          start = i;
-          if(++starts > 1)
-          {
-            is_mesh.store(false, std::memory_order_relaxed);
-            return;
-          }
-        }
-      std::size_t walked = 1;
-      for(std::size_t i = find(s.by_previous, corners[begin + start].next); i != std::size_t(-1) && i != start;
-          i = find(s.by_previous, corners[begin + i].next))
-        ++walked;
-      if(walked != degree)
-        is_mesh.store(false, std::memory_order_relaxed);
-    },
-    64);
+      }
+    std::size_t walked = 1;
+    for(std::size_t i = find(s.by_previous, corners[begin + start].next); i != std::size_t(-1) && i != start;
+        i = find(s.by_previous, corners[begin + i].next))
+      ++walked;
+    if(walked != degree)
+      is_mesh.store(false, std::memory_order_relaxed);
+  };
+  auto scratch = [] { return Scratch(); };
+  if(corner_count < PARALLEL_MESH_CHECK_CORNERS)
+    for_each_index<CGAL::Sequential_tag>(vertex_count, 1, scratch, check_vertex);
+  else
+    for_each_index<Parallel_if_available_tag>(vertex_count, threads, scratch, check_vertex, 64);
   return is_mesh.load();
 }
 
