@@ -8,6 +8,7 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/is_polygon_mesh.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_binary_ply_points.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_polygon_soup.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/text_blocks.h>
 
 #include "test_scratch.h"
 #include "text_rows.h"
@@ -17,6 +18,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 
 #include <cmath>
 #include <cstdint>
@@ -366,4 +368,141 @@ TEST_CASE("is_polygon_mesh: CGAL's answer on a torus of 28,800 triangles, cut, g
     for(unsigned int threads = 1; threads <= 3; ++threads)
       CHECK(SN::internal::is_polygon_mesh(*c.first, threads) == c.second);
   }
+}
+
+namespace {
+
+struct Soups
+{
+  bool fast_taken = false, cgal_read = false;
+  SN::internal::Polygon_soup fast, cgal;
+};
+
+// The soup of an OFF or OBJ file by the fast reader on `threads` threads and by CGAL's.
+Soups read_soups(const std::string& path, unsigned int threads)
+{
+  const SN::internal::Input_file file = SN::internal::open_input_file(path, {"off", "obj"}, ".off or .obj");
+  Soups s;
+  s.fast_taken = file.extension == "off" ? SN::internal::read_ascii_off_soup(file, s.fast, threads)
+                                         : SN::internal::read_obj_soup(file, s.fast, threads);
+  SN::internal::Captured_cerr quiet;
+  try
+  {
+    s.cgal_read = file.extension == "off" ? SN::internal::read_off_soup(file, s.cgal)
+                                          : CGAL::IO::read_OBJ(file.name, s.cgal.points, s.cgal.polygons);
+  }
+  catch(const SN::Input_error&) // a count beyond the file's bytes
+  {
+  }
+  return s;
+}
+
+// A torus of n x n quads, as an OFF file with comments, colors and blank lines, and as an OBJ file
+// with CRLF line ends, texture and normal indices, groups and comments.
+std::pair<std::string, std::string> write_torus(std::size_t n)
+{
+  const std::string folder = scratch_folder("parallel_io");
+  std::mt19937_64 rng(n);
+  std::uniform_real_distribution<double> jitter(-1e-3, 1e-3);
+  std::vector<std::array<double, 3>> points;
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; j < n; ++j)
+    {
+      const double u = 2 * M_PI * double(i) / double(n), v = 2 * M_PI * double(j) / double(n);
+      points.push_back({(3 + std::cos(v)) * std::cos(u) + jitter(rng), (3 + std::cos(v)) * std::sin(u) + jitter(rng),
+                        std::sin(v) + jitter(rng)});
+    }
+  auto vertex = [&](std::size_t i, std::size_t j) { return (i % n) * n + (j % n); };
+  std::ofstream off(folder + "/torus.off"), obj(folder + "/torus.obj");
+  off << "COFF\n# a torus\n" << points.size() << ' ' << n * n << " 0\n";
+  obj << "# a torus\r\nmtllib none.mtl\r\no torus\r\n";
+  off.precision(17);
+  obj.precision(17);
+  for(std::size_t k = 0; k < points.size(); ++k)
+  {
+    const auto& p = points[k];
+    off << p[0] << ' ' << p[1] << "\t" << p[2] << " 200 100 50 255" << (k % 97 == 0 ? "  # note\n\n" : "\n");
+    obj << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << "\r\nvt 0.5 0.5\r\n";
+  }
+  obj << "vn 0 0 1\r\ng faces\r\n";
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = 0; j < n; ++j)
+    {
+      const std::size_t q[4] = {vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1)};
+      off << "4 " << q[0] << ' ' << q[1] << ' ' << q[2] << ' ' << q[3] << (j % 5 == 0 ? " 255 0 0\n" : "\n");
+      obj << "f " << q[0] + 1 << "/1/1 " << q[1] + 1 << "/1/1  " << q[2] + 1 << "//1 " << q[3] + 1 << "\r\n";
+    }
+  return {folder + "/torus.off", folder + "/torus.obj"};
+}
+
+} // namespace
+
+TEST_CASE("OFF and OBJ: a torus of 40,000 quads read on the threads equals CGAL's reading", "[io][off][obj][parallel]")
+{
+  const auto paths = write_torus(200);
+  REQUIRE(std::filesystem::file_size(paths.first) > 4 * SN::internal::TEXT_SMALLEST_BLOCK_BYTES);
+  for(const std::string& path : {paths.first, paths.second})
+    for(unsigned int threads = 1; threads <= 3; ++threads)
+    {
+      INFO(path << " on " << threads << " threads");
+      const Soups s = read_soups(path, threads);
+      REQUIRE(s.fast_taken);
+      REQUIRE(s.cgal_read);
+      CHECK(s.fast.points.size() == 40000);
+      CHECK(s.fast.polygons.size() == 40000);
+      CHECK(s.fast.points == s.cgal.points);
+      CHECK(s.fast.polygons == s.cgal.polygons);
+    }
+}
+
+TEST_CASE("OFF and OBJ: on mutated files the fast readers give CGAL's soup or leave the file to CGAL",
+          "[io][off][obj][parallel]")
+{
+  const std::string folder = scratch_folder("parallel_io");
+  const std::vector<std::pair<std::string, std::string>> seeds{
+    {"off", "OFF\n# c\n5 3 0\n0 0 0\n1 0 0  \n0 1.5 0 # x\n\n1e-3 -2 .5\n-0 0 1\n3 0 1 2\n3 0 2 3 255 0 0\n4 0 1 3 4\n"},
+    {"off", "COFF\n4 2 0\n0 0 0 1 1 1 1\n1 0 0 1 1 1 1\n0 1 0 1 1 1 1\n1 1 0 1 1 1 1\n3 0 1 2\n3 1 3 2\n"},
+    {"obj", "# obj\nv 0 0 0\nv 1 0 0\nv 0 1 0 1.0\nvn 0 0 1\nvt 0 0\ng grp\nusemtl m\nf 1 2 3\nf 1/1/1 3/1/1 "
+            "4/1/1\nv 1 1 0\nf 2//1 4//1 3//1\ns off\n"},
+    {"obj", "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nv 1 1 1\r\nf 1 2 3\r\nf 2 4 3\r\n"}};
+  const std::string alphabet = " \t\n\r#-+.e0123456789/fvx";
+  std::mt19937 rng(3);
+  std::size_t taken = 0, left = 0, mutants = 4000;
+  for(std::size_t m = 0; m < mutants; ++m)
+  {
+    const auto& seed = seeds[m % seeds.size()];
+    std::string text = seed.second;
+    for(std::size_t edits = 1 + rng() % 3; edits > 0 && !text.empty(); --edits)
+    {
+      const std::size_t at = rng() % text.size();
+      const char c = alphabet[rng() % alphabet.size()];
+      switch(rng() % 4)
+      {
+      case 0: text[at] = c; break;
+      case 1: text.insert(text.begin() + std::ptrdiff_t(at), c); break;
+      case 2: text.erase(at, 1); break;
+      default: text.resize(at); break;
+      }
+    }
+    if(text.empty())
+      continue;
+    const std::string path = folder + "/mutant." + seed.first;
+    std::ofstream(path, std::ios::binary) << text;
+    const Soups s = read_soups(path, unsigned(1 + m % 3));
+    if(s.fast_taken)
+    {
+      ++taken;
+      if(!s.cgal_read || s.fast.points != s.cgal.points || s.fast.polygons != s.cgal.polygons)
+        FAIL("mutant " << m << ": the fast reader differs from CGAL's on\n" << text);
+    }
+    else
+    {
+      ++left;
+      CHECK(s.fast.points.empty());
+      CHECK(s.fast.polygons.empty());
+    }
+  }
+  // both outcomes are common
+  CHECK(taken > mutants / 10);
+  CHECK(left > mutants / 10);
 }

@@ -59,7 +59,7 @@ read_oriented_point_set(const std::string& filename, const Normal_options& optio
   else
   {
     internal::Polygon_soup soup;
-    internal::read_polygon_soup(file, soup);
+    internal::read_polygon_soup(file, soup, options.threads);
     if(!soup.polygons.empty())
     {
       internal::mesh_to_points(soup, out, options.threads);

@@ -11,7 +11,9 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/Polygon_soup.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/cgal_5_5_workarounds.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/input_file.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_ascii_off.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_binary_ply_points.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_obj.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_off.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_ply.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_stl.h>
@@ -33,7 +35,9 @@ namespace internal {
 
 // Reads the soup of an OFF, OBJ, PLY or STL file with the reader of its format; a file that
 // cannot be parsed throws, with CGAL's explanation when it gave one. No faces is not an error here.
-inline void read_polygon_soup(const Input_file& file, Polygon_soup& soup)
+// Plain ASCII OFF and OBJ files are parsed on `threads` threads (0: the default), the others by
+// CGAL's readers, with the same result.
+inline void read_polygon_soup(const Input_file& file, Polygon_soup& soup, unsigned int threads = 0)
 {
   const std::string& ext = file.extension;
   bool read = false;
@@ -41,11 +45,11 @@ inline void read_polygon_soup(const Input_file& file, Polygon_soup& soup)
   {
     Captured_cerr captured;
     if(ext == "off")
-      read = read_off_soup(file, soup);
+      read = read_ascii_off_soup(file, soup, threads) || read_off_soup(file, soup);
     else if(ext == "ply")
       read = read_ply_soup(file, soup);
     else if(ext == "obj")
-      read = CGAL::IO::read_OBJ(file.name, soup.points, soup.polygons);
+      read = read_obj_soup(file, soup, threads) || CGAL::IO::read_OBJ(file.name, soup.points, soup.polygons);
     else if(ext == "stl")
       read = read_stl_soup(file, soup);
     reason = captured.first_line();

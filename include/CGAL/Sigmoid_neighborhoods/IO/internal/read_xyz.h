@@ -8,21 +8,14 @@
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/text_blocks.h>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
-
-#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <exception>
-#include <filesystem>
-#include <fstream>
-#include <memory>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -36,9 +29,6 @@ namespace internal {
 constexpr std::size_t XYZ_POINT_COLUMNS = 3;
 constexpr std::size_t XYZ_POINT_AND_NORMAL_COLUMNS = 6;
 
-// A block holds this much at least: smaller ones cost more to hand out than to parse.
-constexpr std::size_t XYZ_SMALLEST_BLOCK_BYTES = std::size_t(1) << 20;
-
 // What one block of whole lines holds, with line numbers counted from the block's start. Parsing
 // stops at the block's first error; whether it is the file's first error, and whether the block's
 // first line with numbers agrees with the earlier blocks, only the blocks before it can say.
@@ -51,11 +41,7 @@ struct Xyz_block
   std::size_t first_columns_line = 0;
   std::string error; // the message of its first error, after "line N: "
   std::size_t error_line = 0;
-  std::exception_ptr exception; // out of memory
 };
-
-// The spaces of std::isspace in the C locale, those `>>` skips between the tokens of a line.
-inline bool is_xyz_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
 
 // Parses the token [first, last): false with `error` set when it is not a finite number. The same
 // double as std::strtod, the same errors: std::from_chars is the fast path, and whatever it does
@@ -98,12 +84,12 @@ inline void parse_xyz_block(const char* first, const char* last, Xyz_block& b)
     std::size_t count = 0;
     for(const char* p = line;;)
     {
-      while(p < stop && is_xyz_space(*p))
+      while(p < stop && is_text_space(*p))
         ++p;
       if(p == stop)
         break;
       const char* token = p;
-      while(p < stop && !is_xyz_space(*p))
+      while(p < stop && !is_text_space(*p))
         ++p;
       double v;
       if(!parse_xyz_number(token, p, v, b.error))
@@ -148,92 +134,25 @@ inline void read_xyz(const std::string& filename, std::vector<Oriented_point_set
                      std::vector<Oriented_point_set::Vector_3>& normals, bool& has_normals,
                      unsigned int threads = 0)
 {
-  // The whole file in one read when its size is known; a pipe's is not: twice the room at a time
-  // then. Not zeroed first: memory is slow to touch the first time.
-  std::unique_ptr<char[]> bytes;
-  std::size_t size = 0;
-  {
-    std::ifstream in(filename, std::ios::binary);
-    std::error_code ec;
-    const std::uintmax_t file_size = std::filesystem::file_size(filename, ec);
-    std::size_t capacity = ec ? XYZ_SMALLEST_BLOCK_BYTES : std::size_t(file_size) + 1; // + 1: the read meets the end
-    bytes.reset(new char[capacity]);
-    while(in)
-    {
-      if(size == capacity)
-      {
-        std::unique_ptr<char[]> larger(new char[capacity *= 2]);
-        std::memcpy(larger.get(), bytes.get(), size);
-        bytes = std::move(larger);
-      }
-      in.read(bytes.get() + size, std::streamsize(capacity - size));
-      size += std::size_t(in.gcount());
-    }
-    if(in.bad())
-      throw Input_error("read error");
-  }
-
-  // About 4 blocks a thread, for balance, each of whole lines: it ends just after a '\n'.
-  std::size_t thread_number = 1;
-#ifdef _OPENMP
-  thread_number = threads != 0 ? threads : std::size_t((std::max)(omp_get_max_threads(), 1));
-#else
-  (void)threads;
-#endif
-  const std::size_t wanted = (std::max)(std::size_t(1),
-                                        (std::min)(4 * thread_number, size / XYZ_SMALLEST_BLOCK_BYTES));
-  const char* const data = bytes.get();
-  std::vector<std::size_t> starts{0};
-  for(std::size_t i = 1; i < wanted; ++i)
-  {
-    const std::size_t from = (std::max)(starts.back(), i * (size / wanted));
-    const void* line_end = std::memchr(data + from, '\n', size - from);
-    if(line_end == nullptr)
-      break;
-    const std::size_t start = std::size_t(static_cast<const char*>(line_end) - data) + 1;
-    if(start == size)
-      break;
-    starts.push_back(start);
-  }
-  starts.push_back(size);
-
-  const std::int64_t block_number = std::int64_t(starts.size() - 1);
+  Text_file text = read_text_file(filename);
+  const char* const data = text.bytes.get();
+  const std::vector<std::size_t> starts = line_block_starts(data, 0, text.size, text_reader_threads(threads));
   std::vector<Xyz_block> blocks(starts.size() - 1);
-  // An exception must not leave an OpenMP region: it is kept with its block.
-  auto parse = [&](std::int64_t i) {
-    const std::size_t k = std::size_t(i);
-    try
-    {
-      parse_xyz_block(data + starts[k], data + starts[k + 1], blocks[k]);
-    }
-    catch(...)
-    {
-      blocks[k].exception = std::current_exception();
-    }
-  };
-#ifdef _OPENMP
-  // No OpenMP region for one block: a forked child (the memory-limit tests) cannot start one.
-  if(block_number > 1 && thread_number > 1)
-  {
-#pragma omp parallel for schedule(dynamic, 1) num_threads(static_cast<int>(thread_number))
-    for(std::int64_t i = 0; i < block_number; ++i)
-      parse(i);
-  }
-  else
-#endif
-    for(std::int64_t i = 0; i < block_number; ++i)
-      parse(i);
-  bytes.reset(); // the text is no longer needed: freed before the points are gathered
+  std::vector<std::exception_ptr> exceptions; // out of memory
+  parse_blocks(blocks.size(), text_reader_threads(threads), exceptions,
+               [&](std::size_t i) { parse_xyz_block(data + starts[i], data + starts[i + 1], blocks[i]); });
+  text.bytes.reset(); // the text is no longer needed: freed before the points are gathered
 
   // The blocks in file order: the first error a sequential reading meets is the one thrown. The
   // file's column count is that of its first line with numbers. A block's first line with numbers
   // comes before any error of the block and is checked against it; if they agree, the block's own
   // checks, made against that line, hold for the file.
   std::size_t columns = 0, lines_before = 0, total = 0;
-  for(const Xyz_block& b : blocks)
+  for(std::size_t i = 0; i < blocks.size(); ++i)
   {
-    if(b.exception)
-      std::rethrow_exception(b.exception);
+    const Xyz_block& b = blocks[i];
+    if(exceptions[i])
+      std::rethrow_exception(exceptions[i]);
     if(b.first_columns != 0)
     {
       if(columns == 0)
