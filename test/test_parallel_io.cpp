@@ -6,6 +6,7 @@
 // shortest text of each double) read back to the same doubles, the same bytes for any thread count.
 
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/is_polygon_mesh.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/mesh_to_points.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_binary_ply_points.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_polygon_soup.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/text_blocks.h>
@@ -505,4 +506,27 @@ TEST_CASE("OFF and OBJ: on mutated files the fast readers give CGAL's soup or le
   // both outcomes are common
   CHECK(taken > mutants / 10);
   CHECK(left > mutants / 10);
+}
+
+TEST_CASE("mesh vertex normals on the threads: CGAL's compute_vertex_normals() bit for bit", "[io][mesh][parallel]")
+{
+  // the torus of the OFF test, quads and all, past the size computed on one thread
+  const auto paths = write_torus(120);
+  SN::internal::Polygon_soup soup;
+  REQUIRE(SN::internal::read_ascii_off_soup(SN::internal::open_input_file(paths.first, {"off"}, ".off"), soup, 1));
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  Mesh mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
+  REQUIRE(mesh.number_of_faces() >= SN::internal::PARALLEL_NORMAL_FACES);
+  auto expected = mesh.add_property_map<Mesh::Vertex_index, Vector>("v:expected").first;
+  CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, expected);
+  for(unsigned int threads = 1; threads <= 3; ++threads)
+  {
+    Mesh copy = mesh;
+    const auto normals = SN::internal::vertex_normals_on_threads(copy, threads);
+    std::size_t differ = 0;
+    for(Mesh::Vertex_index v : mesh.vertices())
+      differ += normals[v] != expected[v];
+    CHECK(differ == 0);
+  }
 }

@@ -13,7 +13,9 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/merge_equal_positions.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_polygon_soup.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/mesh_points.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
@@ -40,6 +42,42 @@ inline void check_soup(const Polygon_soup& soup)
     for(std::size_t v : polygon)
       if(v >= soup.points.size())
         throw Input_error("a face refers to vertex " + std::to_string(v) + " of " + std::to_string(soup.points.size()));
+}
+
+// Meshes with fewer faces have their normals computed on one thread.
+constexpr std::size_t PARALLEL_NORMAL_FACES = std::size_t(1) << 13;
+
+// What CGAL's `Polygon_mesh_processing::compute_vertex_normals()` gives, each face's and each
+// vertex's normal computed by CGAL's function on `threads` threads (0: the default): the same bits.
+template <typename Point_3>
+typename CGAL::Surface_mesh<Point_3>::template Property_map<typename CGAL::Surface_mesh<Point_3>::Vertex_index,
+                                                            typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3>
+vertex_normals_on_threads(CGAL::Surface_mesh<Point_3>& mesh, unsigned int threads)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  typedef CGAL::Surface_mesh<Point_3> Mesh;
+  typedef typename CGAL::Kernel_traits<Point_3>::Kernel::Vector_3 Vector_3;
+  auto face_normals = mesh.template add_property_map<typename Mesh::Face_index, Vector_3>("f:normal").first;
+  auto vertex_normals = mesh.template add_property_map<typename Mesh::Vertex_index, Vector_3>("v:normal").first;
+  const std::vector<typename Mesh::Face_index> all_faces(mesh.faces().begin(), mesh.faces().end());
+  const std::vector<typename Mesh::Vertex_index> all_vertices(mesh.vertices().begin(), mesh.vertices().end());
+  auto on_threads = [&](std::size_t n, const auto& body) {
+    auto no_scratch = [] { return 0; };
+    auto each = [&](std::size_t i, int) { body(i); };
+    // a small mesh on one thread: a forked child (the readers' limit tests) cannot start a region
+    if(all_faces.size() < PARALLEL_NORMAL_FACES)
+      for_each_index<CGAL::Sequential_tag>(n, 1, no_scratch, each);
+    else
+      for_each_index<Parallel_if_available_tag>(n, threads, no_scratch, each, 256);
+  };
+  on_threads(all_faces.size(), [&](std::size_t i) {
+    face_normals[all_faces[i]] = PMP::compute_face_normal(all_faces[i], mesh);
+  });
+  on_threads(all_vertices.size(), [&](std::size_t i) {
+    vertex_normals[all_vertices[i]] =
+      PMP::compute_vertex_normal(all_vertices[i], mesh, CGAL::parameters::face_normal_map(face_normals));
+  });
+  return vertex_normals;
 }
 
 // A mesh to points (SPEC §1): one point per vertex with a face, vertices at one position merged
@@ -91,7 +129,8 @@ inline void mesh_to_points(const Polygon_soup& soup, Oriented_point_set& out, un
   CGAL::Surface_mesh<Point_3> mesh;
   PMP::polygon_soup_to_polygon_mesh(distinct, faces, mesh);
 
-  const auto mesh_points = internal::mesh_points(mesh, CGAL::parameters::default_values());
+  const auto mesh_points = internal::mesh_points(
+    mesh, CGAL::parameters::vertex_normal_map(vertex_normals_on_threads(mesh, threads)));
   // Vertices of `distinct` used by no kept face are isolated in `mesh`.
   out.dropped_vertices += mesh_points.summary.dropped_vertices();
   for(std::size_t i = 0; i < mesh_points.input.size(); ++i)
