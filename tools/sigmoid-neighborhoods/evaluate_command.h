@@ -55,10 +55,11 @@ struct Model_file
   std::uintmax_t bytes = 0;
 };
 
-// Reading a mesh (CGAL's parsing, the soup's repair and orientation, the vertex normals) runs on one
-// thread: on the clean meshes of ../shared/data it was a third of a one-thread run. So the next
-// models are read on threads of their own, one thread each (the same points and normals as on
-// any number), while the current one is searched: up to `depth` models ahead, files of at most
+// Reading a model has steps on one thread (the merge of equal positions, the mesh built from its
+// soup, CGAL's readers for files the parallel ones leave to them); on the clean meshes of
+// ../shared/data it was a third of a one-thread run when all of it was. So the next models are read
+// on threads of their own, one thread each (the same points and normals as on any number), while the
+// current one is searched: up to `depth` models ahead, files of at most
 // READ_AHEAD_BYTES together, so that memory holds a bounded amount of small models beside the
 // searched one (a larger file is read when taken, on all threads). A model's exception reaches the
 // caller when it takes the model, as if it were read then.
