@@ -95,7 +95,7 @@ inline void mesh_to_points(const Polygon_soup& soup, Oriented_point_set& out, un
   for(const auto& polygon : soup.polygons)
     for(std::size_t v : polygon)
       referenced[v] = true;
-  const Merged_positions merged = merge_equal_positions(soup.points, referenced);
+  const Merged_positions merged = merge_equal_positions(soup.points, referenced, threads);
   const std::size_t referenced_count = merged.first.size() + merged.merged;
   out.dropped_vertices = soup.points.size() - referenced_count;
   out.merged_duplicates = merged.merged;

@@ -12,10 +12,10 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/text_blocks.h>
 
 #include <algorithm>
-#include <array>
 #include <charconv>
 #include <cstring>
 #include <exception>
+#include <iterator>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -28,16 +28,13 @@ namespace internal {
 // The keywords CGAL 5.5's `IO::read_OBJ()` accepts and ignores, besides `vt`, `vn` and comments.
 inline bool is_ignored_obj_keyword(const char* first, const char* last)
 {
-  static const std::array<const char*, 42> keywords{
-    "vp",     "bevel",    "lod",        "ctech",      "c_interp", "usemap",   "usemtl", "stech",    "d_interp",
-    "mtllib", "shadow_obj", "trace_obj", "o",        "g",        "s",        "p",      "cstype",   "deg",
-    "step",   "bmat",     "con",        "curv",       "curv2",    "surf",     "parm",   "trim",     "hole",
-    "scrv",   "sp",       "end",        "surf_1",     "q0_1",     "q1_1",     "curv2d_1", "surf_2", "q0_2",
-    "q1_2",   "curv2d_2", "bsp",        "bzp",        "cdc",      "cdp"};
+  static const char* const keywords[] = {
+    "vp", "bevel", "lod", "ctech", "c_interp", "usemap", "usemtl", "stech", "d_interp", "mtllib", "shadow_obj",
+    "trace_obj", "o", "g", "s", "p", "cstype", "deg", "step", "bmat", "con", "curv", "curv2", "surf", "parm",
+    "trim", "hole", "scrv", "sp", "end", "surf_1", "q0_1", "q1_1", "curv2d_1", "surf_2", "q0_2", "q1_2",
+    "curv2d_2", "bsp", "bzp", "cdc", "cdp", "res"};
   const std::size_t length = std::size_t(last - first);
-  if(length == 3 && std::memcmp(first, "res", 3) == 0)
-    return true;
-  return std::any_of(keywords.begin(), keywords.end(), [&](const char* k) {
+  return std::any_of(std::begin(keywords), std::end(keywords), [&](const char* k) {
     return std::strlen(k) == length && std::memcmp(k, first, length) == 0;
   });
 }
