@@ -760,6 +760,25 @@ TEST_CASE("IO: read_polygon_mesh() reads as CGAL's read_polygon_mesh(), through 
   for(auto c = cgal.vertices().begin(); c != cgal.vertices().end(); ++c, ++o)
     CHECK(ours.point(*o) == cgal.point(*c));
 
+  // faces as CGAL orients them: one flipped face of a strip is turned, the mesh is kept as it is
+  auto face_cycles = [](const CGAL::Surface_mesh<Point_3>& mesh) {
+    std::vector<std::vector<Point_3>> cycles;
+    for(auto f : mesh.faces())
+    {
+      cycles.emplace_back();
+      for(auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+        cycles.back().push_back(mesh.point(v));
+    }
+    return cycles;
+  };
+  CHECK(face_cycles(ours) == face_cycles(cgal));
+  write_text(path("io_flipped.off"), "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 1 0\n3 0 1 2\n3 1 2 3\n3 1 4 3\n");
+  CGAL::Surface_mesh<Point_3> flipped_ours, flipped_cgal;
+  SN::read_polygon_mesh(path("io_flipped.off"), flipped_ours);
+  REQUIRE(CGAL::Polygon_mesh_processing::IO::read_polygon_mesh(path("io_flipped.off"), flipped_cgal));
+  CHECK(flipped_ours.number_of_faces() == 3);
+  CHECK(face_cycles(flipped_ours) == face_cycles(flipped_cgal));
+
   // the isolated vertex of merged.off is removed
   CGAL::Surface_mesh<Point_3> merged;
   SN::read_polygon_mesh(merged_off(), merged);

@@ -41,9 +41,14 @@ read_polygon_mesh(const std::string& filename, CGAL::Surface_mesh<Oriented_point
     throw Input_error("no faces in the file");
   internal::check_soup(soup);
   PMP::repair_polygon_soup(soup.points, soup.polygons);
-  PMP::orient_polygon_soup(soup.points, soup.polygons);
+  // A soup that is a mesh is one consistently oriented fan around each vertex: CGAL's orientation
+  // would flip no face and split no vertex, so it is skipped.
   if(!internal::is_polygon_mesh(soup.polygons))
-    throw Input_error("the faces do not form a polygon mesh, even after orientation");
+  {
+    PMP::orient_polygon_soup(soup.points, soup.polygons);
+    if(!internal::is_polygon_mesh(soup.polygons))
+      throw Input_error("the faces do not form a polygon mesh, even after orientation");
+  }
   PMP::polygon_soup_to_polygon_mesh(soup.points, soup.polygons, mesh);
   PMP::remove_isolated_vertices(mesh);
   mesh.collect_garbage();
