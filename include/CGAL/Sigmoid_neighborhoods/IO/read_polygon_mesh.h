@@ -22,8 +22,9 @@ namespace Sigmoid_neighborhoods {
   \brief reads a mesh file (OFF, PLY, OBJ, STL) into `mesh`, through the readers of
   `read_oriented_point_set()`, and makes it a polygon mesh as
   `CGAL::Polygon_mesh_processing::IO::read_polygon_mesh()` does: the soup repaired by
-  `repair_polygon_soup()` and oriented by `orient_polygon_soup()`; vertices without a face are
-  removed.
+  `repair_polygon_soup()` and oriented by `orient_polygon_soup()` (unless it is a polygon mesh
+  already, when that would change nothing); vertices without a face are removed. Plain ASCII OFF
+  and OBJ files are parsed on OpenMP's default number of threads, with the result of CGAL's readers.
 
   \param filename the file; its extension (any case) selects the format: `.off`, `.obj`, `.ply` or `.stl`
   \param mesh the mesh read; it should be empty
