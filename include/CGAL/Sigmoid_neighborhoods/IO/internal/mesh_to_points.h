@@ -82,7 +82,7 @@ vertex_normals_on_threads(CGAL::Surface_mesh<Point_3>& mesh, unsigned int thread
 
 // A mesh to points (SPEC §1): one point per vertex with a face, vertices at one position merged
 // into the first of them, normals from CGAL's vertex normals of the faces that keep three corners.
-// The check of the faces runs on `threads` threads (0: the default).
+// The merge, the check of the faces and the normals run on `threads` threads (0: the default).
 inline void mesh_to_points(const Polygon_soup& soup, Oriented_point_set& out, unsigned int threads = 0)
 {
   typedef Oriented_point_set::Point_3 Point_3;
