@@ -84,13 +84,11 @@ inline void parse_xyz_block(const char* first, const char* last, Xyz_block& b)
     std::size_t count = 0;
     for(const char* p = line;;)
     {
-      while(p < stop && is_text_space(*p))
-        ++p;
+      p = skip_text_spaces(p, stop);
       if(p == stop)
         break;
       const char* token = p;
-      while(p < stop && !is_text_space(*p))
-        ++p;
+      p = text_token_end(p, stop);
       double v;
       if(!parse_xyz_number(token, p, v, b.error))
       {
