@@ -2,8 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Reading and writing on every thread, with the results of the sequential code: binary PLY point
-// sets read from their records against CGAL's point set reader, and the tool's text rows (the
-// shortest text of each double) read back to the same doubles, the same bytes for any thread count.
+// sets read from their records against CGAL's point set reader, ASCII OFF and OBJ files against
+// CGAL's readers, the mesh check and the vertex normals against CGAL's functions, and the tool's
+// text rows (the shortest text of each double) read back to the same doubles, the same bytes for any
+// thread count.
 
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/is_polygon_mesh.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/mesh_to_points.h>
@@ -20,7 +22,6 @@
 
 #include <algorithm>
 #include <array>
-
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -249,7 +250,7 @@ bool cgal_says_mesh(const Polygons& polygons)
 
 } // namespace
 
-TEST_CASE("is_polygon_mesh: the answer of CGAL's check on the cases it refuses", "[io][mesh][parallel]")
+TEST_CASE("is_polygon_mesh: the answer of CGAL's check on named cases", "[io][mesh][parallel]")
 {
   Polygons closed;
   add_octahedron(closed, 0);
