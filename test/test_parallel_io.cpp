@@ -9,6 +9,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/is_polygon_mesh.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/mesh_to_points.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_ascii_ply_points.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_binary_ply_points.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_polygon_soup.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/text_blocks.h>
@@ -57,6 +58,14 @@ Read read_binary(const std::string& path, unsigned int threads)
   return r;
 }
 
+Read read_ascii(const std::string& path, unsigned int threads)
+{
+  Read r;
+  r.taken = SN::internal::read_ascii_ply_points(SN::internal::open_input_file(path, {"ply"}, ".ply"), r.points,
+                                                r.normals, r.has_normals, r.labels, threads);
+  return r;
+}
+
 Read read_by_cgal(const std::string& path)
 {
   Read r;
@@ -80,17 +89,19 @@ void put(std::ofstream& out, T value)
   out.write(reinterpret_cast<const char*>(&value), sizeof(T));
 }
 
-// A binary little-endian PLY point set: x y z of `Real`, normals of `NormalReal` when asked, a
-// uchar `label` or a float `class` (1.5 every 7th point: no labels then), and an int property between.
+// A PLY point set, binary little-endian or ASCII: x y z of `Real`, normals of `NormalReal` when
+// asked, a uchar `label` or a float `class` (1.5 every 7th point: no labels then), and an int
+// property between (negative for half the points).
 template <typename Real, typename NormalReal>
-std::string write_ply(const std::string& name, std::size_t n, bool normals, const std::string& label_kind)
+std::string write_ply(const std::string& name, std::size_t n, bool normals, const std::string& label_kind,
+                      bool ascii = false)
 {
   const std::string path = scratch_folder("parallel_io") + "/" + name;
   std::ofstream out(path, std::ios::binary);
   const char* real = sizeof(Real) == 4 ? "float" : "double";
   const char* normal_real = sizeof(NormalReal) == 4 ? "float" : "double";
-  out << "ply\nformat binary_little_endian 1.0\ncomment test\nelement vertex " << n << "\nproperty " << real
-      << " x\nproperty " << real << " y\nproperty int extra\nproperty " << real << " z\n";
+  out << "ply\nformat " << (ascii ? "ascii" : "binary_little_endian") << " 1.0\ncomment test\nelement vertex " << n
+      << "\nproperty " << real << " x\nproperty " << real << " y\nproperty int extra\nproperty " << real << " z\n";
   if(normals)
     out << "property " << normal_real << " nx\nproperty " << normal_real << " ny\nproperty " << normal_real
         << " nz\n";
@@ -99,21 +110,33 @@ std::string write_ply(const std::string& name, std::size_t n, bool normals, cons
   else if(label_kind == "class")
     out << "property float class\n";
   out << "end_header\n";
+  out.precision(17);
+  // a value in binary, or in ASCII its text and a space
+  auto value = [&](auto v) {
+    if(!ascii)
+      put(out, v);
+    else if constexpr(sizeof(v) == 1)
+      out << int(v) << ' ';
+    else
+      out << v << ' ';
+  };
   std::mt19937_64 rng(n);
   std::uniform_real_distribution<double> u(-1e3, 1e3);
   for(std::size_t i = 0; i < n; ++i)
   {
-    put(out, Real(u(rng)));
-    put(out, Real(u(rng)));
-    put(out, std::int32_t(i));
-    put(out, Real(u(rng) * 1e-3));
+    value(Real(u(rng)));
+    value(Real(u(rng)));
+    value(std::int32_t(i) - std::int32_t(n / 2));
+    value(Real(u(rng) * 1e-3));
     if(normals)
       for(int c = 0; c < 3; ++c)
-        put(out, NormalReal(u(rng) / 1e3));
+        value(NormalReal(u(rng) / 1e3));
     if(label_kind == "label")
-      put(out, std::uint8_t(i % 9));
+      value(std::uint8_t(i % 9));
     else if(label_kind == "class")
-      put(out, float(i % 7 == 6 ? 1.5 : double(i % 4)));
+      value(float(i % 7 == 6 ? 1.5 : double(i % 4)));
+    if(ascii)
+      out << (i % 11 == 0 ? "\r\n\n" : "\n");
   }
   return path;
 }
@@ -175,6 +198,109 @@ TEST_CASE("binary PLY: other files are left to CGAL's readers", "[io][ply][paral
   const std::string full = write_ply<float, float>("short.ply", 100, true, "none");
   std::filesystem::resize_file(full, std::filesystem::file_size(full) - 5);
   CHECK_THROWS_WITH(read_binary(full, 2), Catch::Contains("element 'vertex'"));
+}
+
+TEST_CASE("ASCII PLY: the values read on any thread count equal CGAL's point set reader", "[io][ply][parallel]")
+{
+  const std::vector<std::string> files = {
+    write_ply<float, float>("ascii_float_normals_label.ply", 30000, true, "label", true),
+    write_ply<double, float>("ascii_double_float_normals.ply", 3001, true, "none", true),
+    write_ply<double, double>("ascii_double_class.ply", 777, false, "class", true),
+    write_ply<float, float>("ascii_float_no_normals.ply", 1, false, "none", true)};
+  REQUIRE(std::filesystem::file_size(files[0]) > 4 * SN::internal::TEXT_SMALLEST_BLOCK_BYTES);
+  for(const std::string& path : files)
+  {
+    INFO(path);
+    const Read cgal = read_by_cgal(path);
+    for(unsigned int threads : {1u, 2u, 3u})
+      check_same(read_ascii(path, threads), cgal);
+  }
+  CHECK(read_by_cgal(files[0]).labels.size() == 30000);
+  CHECK(read_by_cgal(files[2]).labels.empty()); // a class of 1.5 is no label
+  CHECK_FALSE(read_ascii(write_ply<float, float>("binary.ply", 10, true, "none"), 2).taken);
+}
+
+TEST_CASE("ASCII PLY: files it might read otherwise are left to CGAL's readers; mutated files", "[io][ply][parallel]")
+{
+  const std::string folder = scratch_folder("parallel_io");
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nproperty uchar label\nproperty short s\nend_header\n";
+  const std::vector<std::pair<std::string, bool>> bodies{
+    {"0 0 0 1 -2\n1 0 0 2 3\n0 1 0 255 -32768\n", true},
+    {"0 0 0 1 -2 1 0 0 2 3\n0 1 0 255 -32768\n", false}, // two vertices on a line
+    {"0 0 0 1 -2\n1 0 0 2 3 7\n0 1 0 255 -32768\n", false}, // a token more
+    {"0 0 0 1 -2\n1 0 0 2.5 3\n0 1 0 255 -32768\n", false}, // a float for a uchar
+    {"0 0 0 1 -2\n1 0 0 300 3\n0 1 0 255 -32768\n", false}, // beyond a uchar
+    {"0 0 0 1 -2\n1 0 0 -1 3\n0 1 0 255 -32768\n", false}, // a sign for a uchar
+    {"0 0 0 1 -2\n1 0 0 2 +3\n0 1 0 255 -32768\n", false}, // '+'
+    {"0 0 0 1 -2\n1 0 0 2 3\n", false}}; // cut short
+  for(std::size_t b = 0; b < bodies.size(); ++b)
+  {
+    INFO(bodies[b].first);
+    const std::string path = folder + "/ascii_case.ply";
+    std::ofstream(path, std::ios::binary) << header << bodies[b].first;
+    const Read fast = read_ascii(path, 2);
+    CHECK(fast.taken == bodies[b].second);
+    if(fast.taken)
+      check_same(fast, read_by_cgal(path));
+    else
+      CHECK(fast.points.empty());
+  }
+
+  // Mutants of two files: where taken, CGAL's values (read after the checks of its path)
+  const std::vector<std::string> seeds{
+    header + "8.19821 -21.7553 7.88123 1 16\n1e-3 .5 -0 0 -7\n-3.08065 21.6219 -1.45825 9 1\n",
+    "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty double z\n"
+    "property float nx\nproperty float ny\nproperty float nz\nproperty float class\nelement face 0\n"
+    "property list uchar int vertex_indices\nend_header\n0.1 0.2 0.3 0 0 1 1\n1.5 2.5 3.5 0 1 0 2.5\n\n"
+    "-1e2 4 5 1 0 0 3\n"};
+  const std::string alphabet = " \t\n\r-+.e0123456789x";
+  std::mt19937 rng(5);
+  std::size_t taken = 0, left = 0, mutants = 3000;
+  for(std::size_t m = 0; m < mutants; ++m)
+  {
+    std::string text = seeds[m % seeds.size()];
+    const std::size_t body = text.find("end_header") + 11;
+    for(std::size_t edits = 1 + rng() % 3; edits > 0 && text.size() > body; --edits)
+    {
+      const std::size_t at = body + rng() % (text.size() - body);
+      const char c = alphabet[rng() % alphabet.size()];
+      switch(rng() % 4)
+      {
+      case 0: text[at] = c; break;
+      case 1: text.insert(text.begin() + std::ptrdiff_t(at), c); break;
+      case 2: text.erase(at, 1); break;
+      default: text.resize(at); break;
+      }
+    }
+    const std::string path = folder + "/ascii_mutant.ply";
+    std::ofstream(path, std::ios::binary) << text;
+    const Read fast = read_ascii(path, unsigned(1 + m % 3));
+    if(!fast.taken)
+    {
+      ++left;
+      CHECK(fast.points.empty());
+      continue;
+    }
+    ++taken;
+    const SN::internal::Input_file file = SN::internal::open_input_file(path, {"ply"}, ".ply");
+    Read cgal;
+    bool cgal_read = true;
+    try
+    {
+      SN::internal::check_ply_counts(file);
+      cgal = read_by_cgal(path);
+    }
+    catch(const SN::Input_error&)
+    {
+      cgal_read = false;
+    }
+    if(!cgal_read || fast.points != cgal.points || fast.normals != cgal.normals ||
+       fast.has_normals != cgal.has_normals || fast.labels != cgal.labels)
+      FAIL("mutant " << m << ": the fast reader differs from CGAL's on\n" << text);
+  }
+  CHECK(taken > mutants / 10);
+  CHECK(left > mutants / 10);
 }
 
 TEST_CASE("binary PLY: the lone-star scan of the shared data, as CGAL reads it", "[io][ply][parallel][shared-data]")

@@ -38,10 +38,11 @@ inline const std::vector<std::string>& ply_label_names()
   return names;
 }
 
-// One scalar vertex property of a binary PLY file: where it lies in a record and how to read it.
+// One scalar vertex property of a PLY file: where it lies in a record and how to read it.
 struct Ply_field
 {
-  std::size_t offset = 0;
+  std::size_t offset = 0; // in a binary record
+  std::size_t column = 0; // among the properties: the token of an ASCII record
   enum Type { INT8, UINT8, INT16, UINT16, INT32, UINT32, FLOAT, DOUBLE } type = DOUBLE;
 
   double read(const unsigned char* record) const
@@ -98,25 +99,34 @@ inline bool is_little_endian_machine()
   return first == 1;
 }
 
-// The points of a binary little-endian PLY point set (a vertex element of scalars, x y z both float
-// or both double, and no other element with items), read straight from its records on `threads`
-// threads: the same points, normals and labels as CGAL's point set reader gives in
-// read_points_without_faces(), which reads such a file three times over, through streams, and the
-// same checks first (check_ply_header(), check_ply_counts()). False, with nothing read, for any other
-// file: those go to CGAL's readers.
-inline bool read_binary_ply_points(const Input_file& file, std::vector<Oriented_point_set::Point_3>& points,
-                                   std::vector<Oriented_point_set::Vector_3>& normals, bool& has_normals,
-                                   std::vector<int>& labels, unsigned int threads)
+// What the fast PLY readers take from a point set's header: the vertex element's properties, those
+// CGAL's point set reader takes from them, and where the records start.
+struct Ply_point_layout
 {
-  if(!is_little_endian_machine())
-    return false;
+  enum { X, Y, Z, NX, NY, NZ, FIELDS };
+  Ply_field fields[FIELDS];
+  bool has_normals = false;
+  bool has_label = false;
+  Ply_field label;
+  std::vector<Ply_field::Type> types; // of every property, in order
+  std::size_t stride = 0;             // the bytes of a binary record
+  std::size_t count = 0;              // the vertices
+  std::streamoff header_end = 0;
+};
+
+// The layout of a PLY point set in `format` (`binary_little_endian` or `ascii`): a vertex element
+// of scalars, x y z both float or both double, normals of their type or double, and no other
+// element with items, after the header check CGAL's readers get (check_ply_header()). False for any
+// other file: those go to CGAL's readers.
+inline bool ply_point_layout(const Input_file& file, const std::string& wanted_format, Ply_point_layout& layout)
+{
   std::ifstream in(file.name, std::ios::binary);
   {
     std::string line, format_tag, format;
     if(!std::getline(in, line) || !std::getline(in, line))
       return false;
     std::istringstream(line) >> format_tag >> format;
-    if(format != "binary_little_endian")
+    if(format != wanted_format)
       return false;
     in.seekg(0);
   }
@@ -125,7 +135,7 @@ inline bool read_binary_ply_points(const Input_file& file, std::vector<Oriented_
   std::istream& stream = in;
   if(!reader.init(stream) || in.fail())
     return false;
-  const std::streamoff header_end = in.tellg();
+  layout.header_end = in.tellg();
 
   const CGAL::IO::internal::PLY_element* vertices = nullptr;
   for(std::size_t e = 0; e < reader.number_of_elements(); ++e)
@@ -144,23 +154,23 @@ inline bool read_binary_ply_points(const Input_file& file, std::vector<Oriented_
     return false;
 
   // The record's layout, and the fields CGAL's point set reader takes from it.
-  enum { X, Y, Z, NX, NY, NZ, FIELDS };
+  enum { X = Ply_point_layout::X, Y, Z, NX, NY, NZ, FIELDS };
   const char* const field_names[FIELDS] = {"x", "y", "z", "nx", "ny", "nz"};
-  Ply_field fields[FIELDS];
+  Ply_field* fields = layout.fields;
   bool found[FIELDS] = {false, false, false, false, false, false};
-  Ply_field label;
   int label_rank = int(ply_label_names().size()); // the first of ply_label_names() present wins
-  std::size_t stride = 0;
   auto& element = const_cast<CGAL::IO::internal::PLY_element&>(*vertices);
   for(std::size_t p = 0; p < element.number_of_properties(); ++p)
   {
     const CGAL::IO::internal::PLY_read_number* property = element.property(p);
     Ply_field field;
-    field.offset = stride;
+    field.offset = layout.stride;
+    field.column = p;
     std::size_t bytes = 0;
     if(!ply_field_type(property, field.type, bytes))
       return false; // a list
-    stride += bytes;
+    layout.stride += bytes;
+    layout.types.push_back(field.type);
     for(int f = 0; f < FIELDS; ++f)
       if(property->name() == field_names[f])
       {
@@ -170,34 +180,69 @@ inline bool read_binary_ply_points(const Input_file& file, std::vector<Oriented_
     for(int rank = 0; rank < label_rank; ++rank)
       if(property->name() == ply_label_names()[std::size_t(rank)])
       {
-        label = field;
+        layout.label = field;
         label_rank = rank;
       }
   }
+  layout.has_label = label_rank < int(ply_label_names().size());
   // CGAL reads x y z as floats when one is a float, as doubles otherwise: both ways alike only
   auto real = [&](int f) { return fields[f].type == Ply_field::FLOAT || fields[f].type == Ply_field::DOUBLE; };
   if(!found[X] || !found[Y] || !found[Z] || !real(X) || fields[X].type != fields[Y].type ||
      fields[X].type != fields[Z].type)
     return false;
-  has_normals = found[NX] && found[NY] && found[NZ];
-  if(has_normals)
+  layout.has_normals = found[NX] && found[NY] && found[NZ];
+  if(layout.has_normals)
     for(int f = NX; f <= NZ; ++f)
       if(!real(f) || (fields[X].type == Ply_field::FLOAT && fields[f].type != Ply_field::FLOAT))
         return false;
 
-  check_ply_counts(file);
-  const std::size_t n = element.number_of_items();
+  layout.count = element.number_of_items();
+  return true;
+}
+
+// The labels of the values of a label property: ply_labels_of_type()'s rule, integers of `int`,
+// else no labels.
+inline void ply_labels_of_values(const std::vector<double>& values, std::vector<int>& labels)
+{
+  for(double value : values)
+  {
+    if(!(value >= double((std::numeric_limits<int>::min)()) && value <= double((std::numeric_limits<int>::max)())) ||
+       std::trunc(value) != value)
+    {
+      labels.clear();
+      return;
+    }
+    labels.push_back(int(value));
+  }
+}
+
+// The points of a binary little-endian PLY point set (ply_point_layout()), read straight from its
+// records on `threads` threads: the same points, normals and labels as CGAL's point set reader gives
+// in read_points_without_faces(), which reads such a file three times over, through streams. False,
+// with nothing read, for any other file: those go to CGAL's readers.
+inline bool read_binary_ply_points(const Input_file& file, std::vector<Oriented_point_set::Point_3>& points,
+                                   std::vector<Oriented_point_set::Vector_3>& normals, bool& has_normals,
+                                   std::vector<int>& labels, unsigned int threads)
+{
+  Ply_point_layout layout;
+  if(!is_little_endian_machine() || !ply_point_layout(file, "binary_little_endian", layout))
+    return false;
+  check_ply_counts(file); // the records' bytes are there before they are allocated
+  const std::size_t n = layout.count, stride = layout.stride;
   std::vector<unsigned char> records(n * stride);
-  in.clear();
-  in.seekg(header_end);
+  std::ifstream in(file.name, std::ios::binary);
+  in.seekg(layout.header_end);
   in.read(reinterpret_cast<char*>(records.data()), std::streamsize(records.size()));
   if(std::size_t(in.gcount()) != records.size())
     return false; // check_ply_counts() has seen these bytes: CGAL's reader says what happened
 
+  enum { X = Ply_point_layout::X, Y, Z, NX, NY, NZ };
+  const Ply_field* fields = layout.fields;
+  has_normals = layout.has_normals;
   points.resize(n);
   if(has_normals)
     normals.resize(n);
-  std::vector<double> label_values(label_rank < int(ply_label_names().size()) ? n : 0);
+  std::vector<double> label_values(layout.has_label ? n : 0);
   const std::ptrdiff_t count = std::ptrdiff_t(n);
   auto convert = [&](std::ptrdiff_t i) {
     const unsigned char* record = records.data() + std::size_t(i) * stride;
@@ -207,7 +252,7 @@ inline bool read_binary_ply_points(const Input_file& file, std::vector<Oriented_
       normals[std::size_t(i)] = Oriented_point_set::Vector_3(fields[NX].read(record), fields[NY].read(record),
                                                              fields[NZ].read(record));
     if(!label_values.empty())
-      label_values[std::size_t(i)] = label.read(record);
+      label_values[std::size_t(i)] = layout.label.read(record);
   };
 #ifdef _OPENMP
   // no OpenMP region for a small file: a forked child (the readers' limit tests) cannot start one
@@ -224,18 +269,7 @@ inline bool read_binary_ply_points(const Input_file& file, std::vector<Oriented_
 #endif
     for(std::ptrdiff_t i = 0; i < count; ++i)
       convert(i);
-
-  // ply_labels_of_type()'s rule: integers of `int`, else no labels
-  for(double value : label_values)
-  {
-    if(!(value >= double((std::numeric_limits<int>::min)()) && value <= double((std::numeric_limits<int>::max)())) ||
-       std::trunc(value) != value)
-    {
-      labels.clear();
-      break;
-    }
-    labels.push_back(int(value));
-  }
+  ply_labels_of_values(label_values, labels);
   return true;
 }
 

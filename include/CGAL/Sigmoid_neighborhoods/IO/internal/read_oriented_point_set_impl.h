@@ -21,6 +21,7 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/input_file.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/merge_equal_positions.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/mesh_to_points.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_ascii_ply_points.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_binary_ply_points.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_las.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_polygon_soup.h>
@@ -53,9 +54,10 @@ read_oriented_point_set(const std::string& filename, const Normal_options& optio
     internal::read_xyz(file.name, out.points, out.normals, has_normals, options.threads);
   else if(file.extension == "las" || file.extension == "laz")
     internal::read_las(file, out, internal::Keep_every_las_point(), options.threads); // no normals in LAS
-  else if(file.extension == "ply" && internal::read_binary_ply_points(file, out.points, out.normals, has_normals, out.labels,
-                                                                            options.threads))
-    ; // a binary point set, read on every thread
+  else if(file.extension == "ply" &&
+          (internal::read_binary_ply_points(file, out.points, out.normals, has_normals, out.labels, options.threads) ||
+           internal::read_ascii_ply_points(file, out.points, out.normals, has_normals, out.labels, options.threads)))
+    ; // a point set, read on every thread
   else
   {
     internal::Polygon_soup soup;
