@@ -112,7 +112,7 @@ struct Normal_options
   /// when normals are estimated, the k-nearest-neighbor rows of `max(neighbors, kept_neighbors)` are
   /// kept in `Oriented_point_set::neighbor_indices` for the steps after (0: none kept)
   unsigned int kept_neighbors = 0;
-  /// the threads of the readers (LAZ chunks, binary PLY, XYZ, OFF, OBJ), of a mesh's check and
+  /// the threads of the readers (LAZ chunks, PLY point sets, XYZ, OFF, OBJ), of a mesh's check and
   /// normals, and of the estimation (0: the OpenMP or TBB default)
   unsigned int threads = 0;
 };
