@@ -8,7 +8,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/input_file.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_binary_ply_points.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/ply_point_layout.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/text_blocks.h>
 
 #include <charconv>

@@ -11,8 +11,8 @@
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/Polygon_soup.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/cgal_5_5_workarounds.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/input_file.h>
+#include <CGAL/Sigmoid_neighborhoods/IO/internal/ply_point_layout.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_ascii_off.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_binary_ply_points.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_obj.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_off.h>
 #include <CGAL/Sigmoid_neighborhoods/IO/internal/read_ply.h>
