@@ -141,22 +141,35 @@ std::string write_ply(const std::string& name, std::size_t n, bool normals, cons
   return path;
 }
 
-} // namespace
-
-TEST_CASE("binary PLY: the records read on any thread count equal CGAL's point set reader", "[io][ply][parallel]")
+// The PLY files of the readers' tests, binary or ASCII: float with normals and labels (`first_size`
+// points), double with float normals, double with a class that is no label, one float point.
+std::vector<std::string> ply_test_files(bool ascii, std::size_t first_size)
 {
-  const std::vector<std::string> files = {
-    write_ply<float, float>("float_normals_label.ply", 5000, true, "label"),
-    write_ply<double, float>("double_float_normals.ply", 3001, true, "none"),
-    write_ply<double, double>("double_class.ply", 777, false, "class"),
-    write_ply<float, float>("float_no_normals.ply", 1, false, "none")};
+  const std::string prefix = ascii ? "ascii_" : "";
+  return {write_ply<float, float>(prefix + "float_normals_label.ply", first_size, true, "label", ascii),
+          write_ply<double, float>(prefix + "double_float_normals.ply", 3001, true, "none", ascii),
+          write_ply<double, double>(prefix + "double_class.ply", 777, false, "class", ascii),
+          write_ply<float, float>(prefix + "float_no_normals.ply", 1, false, "none", ascii)};
+}
+
+// Each file read by `read` on 1, 2 and 3 threads gives what CGAL's point set reader gives.
+void check_reader_on_threads(const std::vector<std::string>& files, Read (*read)(const std::string&, unsigned int))
+{
   for(const std::string& path : files)
   {
     INFO(path);
     const Read cgal = read_by_cgal(path);
     for(unsigned int threads : {1u, 2u, 3u})
-      check_same(read_binary(path, threads), cgal);
+      check_same(read(path, threads), cgal);
   }
+}
+
+} // namespace
+
+TEST_CASE("binary PLY: the records read on any thread count equal CGAL's point set reader", "[io][ply][parallel]")
+{
+  const std::vector<std::string> files = ply_test_files(false, 5000);
+  check_reader_on_threads(files, read_binary);
   CHECK(read_by_cgal(files[0]).labels.size() == 5000);
   CHECK(read_by_cgal(files[2]).labels.empty()); // a class of 1.5 is no label
   CHECK(read_by_cgal(files[0]).points[2].x() != 0.);
@@ -202,19 +215,9 @@ TEST_CASE("binary PLY: other files are left to CGAL's readers", "[io][ply][paral
 
 TEST_CASE("ASCII PLY: the values read on any thread count equal CGAL's point set reader", "[io][ply][parallel]")
 {
-  const std::vector<std::string> files = {
-    write_ply<float, float>("ascii_float_normals_label.ply", 30000, true, "label", true),
-    write_ply<double, float>("ascii_double_float_normals.ply", 3001, true, "none", true),
-    write_ply<double, double>("ascii_double_class.ply", 777, false, "class", true),
-    write_ply<float, float>("ascii_float_no_normals.ply", 1, false, "none", true)};
+  const std::vector<std::string> files = ply_test_files(true, 30000);
   REQUIRE(std::filesystem::file_size(files[0]) > 4 * SN::internal::TEXT_SMALLEST_BLOCK_BYTES);
-  for(const std::string& path : files)
-  {
-    INFO(path);
-    const Read cgal = read_by_cgal(path);
-    for(unsigned int threads : {1u, 2u, 3u})
-      check_same(read_ascii(path, threads), cgal);
-  }
+  check_reader_on_threads(files, read_ascii);
   CHECK(read_by_cgal(files[0]).labels.size() == 30000);
   CHECK(read_by_cgal(files[2]).labels.empty()); // a class of 1.5 is no label
   CHECK_FALSE(read_ascii(write_ply<float, float>("binary.ply", 10, true, "none"), 2).taken);

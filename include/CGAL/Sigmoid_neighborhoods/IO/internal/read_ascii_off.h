@@ -46,19 +46,9 @@ inline bool parse_plain_index(const char* first, const char* last, std::uint64_t
 template <typename Line>
 void for_each_off_item_line(const char* first, const char* last, const Line& line)
 {
-  for(const char* p = first; p < last;)
-  {
-    const char* end = static_cast<const char*>(std::memchr(p, '\n', std::size_t(last - p)));
-    const bool newline = end != nullptr;
-    if(!newline)
-      end = last;
-    const char* start = skip_text_spaces(p, end);
-    p = newline ? end + 1 : last;
-    if(start == end || *start == '#')
-      continue;
-    if(!line(start, end, newline))
-      return;
-  }
+  for_each_line_with_tokens(first, last, [&](const char* start, const char* end, bool newline) {
+    return *start == '#' || line(start, end, newline);
+  });
 }
 
 // The soup of an ASCII OFF file, parsed on `threads` threads (0: OpenMP's default): a block of
@@ -129,14 +119,8 @@ inline bool read_ascii_off_soup(const Input_file& file, Polygon_soup& soup, unsi
       {
         // CGAL's scanner fails on a vertex line that meets the end of the file
         double xyz[3];
-        for(double& c : xyz)
-        {
-          p = skip_text_spaces(p, end);
-          const char* token_end = text_token_end(p, end);
-          if(!newline || !parse_plain_double(p, token_end, c))
-            return fail();
-          p = token_end;
-        }
+        if(!newline || parse_plain_doubles(p, end, xyz, 3) == nullptr)
+          return fail();
         soup.points[item] = Oriented_point_set::Point_3(xyz[0], xyz[1], xyz[2]);
       }
       else

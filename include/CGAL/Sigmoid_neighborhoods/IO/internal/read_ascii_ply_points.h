@@ -103,23 +103,10 @@ inline bool read_ascii_ply_points(const Input_file& file, std::vector<Oriented_p
   const std::size_t block_count = starts.size() - 1, n = layout.count;
   std::vector<std::exception_ptr> exceptions;
 
-  // Calls `line(first, last)` for each line of [first, last) with a token; false stops.
-  auto for_each_record_line = [](const char* first, const char* last, const auto& line) {
-    for(const char* p = first; p < last;)
-    {
-      const char* end = static_cast<const char*>(std::memchr(p, '\n', std::size_t(last - p)));
-      if(end == nullptr)
-        end = last;
-      const char* start = skip_text_spaces(p, end);
-      p = end == last ? last : end + 1;
-      if(start != end && !line(start, end))
-        return;
-    }
-  };
   std::vector<std::size_t> first_record(block_count + 1, 0);
   parse_blocks(block_count, thread_number, exceptions, [&](std::size_t b) {
     std::size_t lines = 0;
-    for_each_record_line(data + starts[b], data + starts[b + 1], [&](const char*, const char*) {
+    for_each_line_with_tokens(data + starts[b], data + starts[b + 1], [&](const char*, const char*, bool) {
       ++lines;
       return true;
     });
@@ -143,7 +130,7 @@ inline bool read_ascii_ply_points(const Input_file& file, std::vector<Oriented_p
     if(record >= n)
       return;
     std::vector<double> values(columns);
-    for_each_record_line(data + starts[b], data + starts[b + 1], [&](const char* p, const char* end) {
+    for_each_line_with_tokens(data + starts[b], data + starts[b + 1], [&](const char* p, const char* end, bool) {
       for(std::size_t c = 0; c < columns; ++c)
       {
         p = skip_text_spaces(p, end);

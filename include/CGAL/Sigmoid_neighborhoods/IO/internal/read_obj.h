@@ -64,32 +64,19 @@ inline const char* ignore_to_obj_space(const char* p, const char* last)
 // far) or too large for an `int`.
 inline void parse_obj_block(const char* first, const char* last, Obj_block& b)
 {
-  for(const char* line = first; line < last;)
-  {
-    const char* end = static_cast<const char*>(std::memchr(line, '\n', std::size_t(last - line)));
-    if(end == nullptr)
-      end = last;
-    const char* keyword = skip_text_spaces(line, end);
-    line = end == last ? last : end + 1;
-    if(keyword == end)
-      continue; // an empty line, or spaces
+  auto fail = [&] {
+    b.failed = true;
+    return false;
+  };
+  for_each_line_with_tokens(first, last, [&](const char* keyword, const char* end, bool) {
     const char* p = text_token_end(keyword, end);
     const std::size_t length = std::size_t(p - keyword);
     if(length == 1 && *keyword == 'v')
     {
       // CGAL reads x, y, z; the rest of the line is ignored
       double xyz[3];
-      for(double& c : xyz)
-      {
-        p = skip_text_spaces(p, end);
-        const char* token_end = text_token_end(p, end);
-        if(!parse_plain_double(p, token_end, c))
-        {
-          b.failed = true;
-          return;
-        }
-        p = token_end;
-      }
+      if(parse_plain_doubles(p, end, xyz, 3) == nullptr)
+        return fail();
       b.points.emplace_back(xyz[0], xyz[1], xyz[2]);
     }
     else if(length == 1 && *keyword == 'f')
@@ -102,19 +89,13 @@ inline void parse_obj_block(const char* first, const char* last, Obj_block& b)
         if(p == end || *p < '0' || *p > '9')
         {
           if(p != end && (*p == '-' || *p == '+'))
-          {
-            b.failed = true; // a sign: maybe an index relative to the vertices read so far
-            return;
-          }
+            return fail(); // a sign: maybe an index relative to the vertices read so far
           break;
         }
         int index = 0;
         const std::from_chars_result r = std::from_chars(p, end, index);
         if(r.ec != std::errc() || index < 1)
-        {
-          b.failed = true;
-          return;
-        }
+          return fail();
         polygon.push_back(std::size_t(index - 1));
         b.largest_index = (std::max)(b.largest_index, std::size_t(index));
         p = ignore_to_obj_space(r.ptr, end);
@@ -123,11 +104,9 @@ inline void parse_obj_block(const char* first, const char* last, Obj_block& b)
     }
     else if(!((length == 2 && (std::memcmp(keyword, "vt", 2) == 0 || std::memcmp(keyword, "vn", 2) == 0)) ||
               *keyword == '#' || is_ignored_obj_keyword(keyword, p)))
-    {
-      b.failed = true;
-      return;
-    }
-  }
+      return fail();
+    return true;
+  });
 }
 
 // The soup of an OBJ file, parsed on `threads` threads (0: OpenMP's default), a block of lines each.

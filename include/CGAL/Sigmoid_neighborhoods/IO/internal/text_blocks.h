@@ -155,6 +155,25 @@ inline const char* text_token_end(const char* p, const char* last)
   return p;
 }
 
+// Calls `line(start, end, newline)` for each line of [first, last) with a character other than a
+// space: `start` is that first character, `end` the line's end (its '\n' left out), `newline`
+// whether a '\n' ends it. `line` returns false to stop.
+template <typename Line>
+void for_each_line_with_tokens(const char* first, const char* last, const Line& line)
+{
+  for(const char* p = first; p < last;)
+  {
+    const char* end = static_cast<const char*>(std::memchr(p, '\n', std::size_t(last - p)));
+    const bool newline = end != nullptr;
+    if(!newline)
+      end = last;
+    const char* start = skip_text_spaces(p, end);
+    p = newline ? end + 1 : last;
+    if(start != end && !line(start, end, newline))
+      return;
+  }
+}
+
 // Whether the token [first, last) is a plain decimal number, read into `v`: digits, '.', 'e', 'E',
 // and signs, without a leading '+', taken whole by std::from_chars, finite. Such a token is read to
 // the same double by CGAL's `IO::iformat()` (the same characters, then sscanf("%lf")) and by
@@ -168,6 +187,21 @@ inline bool parse_plain_double(const char* first, const char* last, double& v)
       return false;
   const std::from_chars_result r = std::from_chars(first, last, v);
   return r.ec == std::errc() && r.ptr == last && std::isfinite(v);
+}
+
+// Reads the `count` tokens after `p` on [p, last) as plain numbers (parse_plain_double()) into
+// `values`; returns the end of the last, or nullptr when one is missing or not plain.
+inline const char* parse_plain_doubles(const char* p, const char* last, double* values, std::size_t count)
+{
+  for(std::size_t i = 0; i < count; ++i)
+  {
+    p = skip_text_spaces(p, last);
+    const char* token_end = text_token_end(p, last);
+    if(!parse_plain_double(p, token_end, values[i]))
+      return nullptr;
+    p = token_end;
+  }
+  return p;
 }
 
 } // namespace internal
