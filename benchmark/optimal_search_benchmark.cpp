@@ -475,13 +475,21 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
   {
     std::printf("  (g) pgeof's optimal k = 6..20 on nanoflann (float32): %10.0f points/s (%.2f s), %.0f bytes/point\n",
                 rate(g), g.seconds, g.extra_bytes / double(n));
-    std::printf("  (h) nanoflann's 20-NN query (doubles): %.2f s; the package's %.2f s (%.2fx)\n", h.seconds,
-                knn.seconds, knn.seconds / h.seconds);
     std::printf("  (c)/(g) %.2f, (e)/(g) %.2f\n", c.seconds / g.seconds, e.seconds / g.seconds);
     peer_ratios = " optimal_over_pgeof=" + std::to_string(c.seconds / g.seconds) +
-                  " equal_over_pgeof=" + std::to_string(e.seconds / g.seconds) +
-                  " knn_over_nanoflann=" + std::to_string(knn.seconds / h.seconds);
+                  " equal_over_pgeof=" + std::to_string(e.seconds / g.seconds);
   }
+  else
+    peer_ratios = " optimal_over_pgeof=nan equal_over_pgeof=nan";
+  // (h) alone (--only knn,h) needs no (g)
+  if(h.seconds > 0.)
+  {
+    std::printf("  (h) nanoflann's 20-NN query (doubles): %.2f s; the package's %.2f s (%.2fx)\n", h.seconds,
+                knn.seconds, knn.seconds / h.seconds);
+    peer_ratios += " knn_over_nanoflann=" + std::to_string(knn.seconds / h.seconds);
+  }
+  else
+    peer_ratios += " knn_over_nanoflann=nan";
 #endif
   std::printf("  input %.1f MB, (c) peak %.1f MB above it\n", input_bytes / 1e6, c.extra_bytes / 1e6);
   std::printf("summary: data=%s points=%zu threads=%d optimal_over_cgal_pca=%.2f equal_over_cgal_pca=%.2f "

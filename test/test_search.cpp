@@ -1147,6 +1147,65 @@ TEST_CASE("the kd-tree on a single point, on a pair and on a hundred copies of o
     }
 }
 
+// Points at 1, 2, 4, ... along two axes: each cut at the middle of a cell splits off one of them, so
+// that a tree of middle cuts alone would be hundreds of levels deep. Deep down, the tree keeps a
+// quarter of the points on each side, and its walk (a stack of bounded depth) still finds every
+// neighbor; the tree built on several threads is the same.
+TEST_CASE("the kd-tree on points that middle cuts would split off one at a time", "[neighbors][bad-input]")
+{
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> unit(0., 1.);
+  Point_list points;
+  for(int e = 0; e < 400; ++e)
+  {
+    points.emplace_back(Point_3(std::ldexp(1., e), 0., 0.), Vector_3(0, 0, 1));
+    points.emplace_back(Point_3(0., std::ldexp(1., e), 0.5), Vector_3(0, 0, 1));
+  }
+  for(int i = 0; i < 400; ++i)
+    points.emplace_back(Point_3(unit(rng), unit(rng), unit(rng)), Vector_3(0, 0, 1));
+  std::shuffle(points.begin(), points.end(), rng);
+
+  std::vector<std::uint32_t> expected_indices, indices;
+  std::vector<std::size_t> expected_offsets, offsets;
+  brute_force_rows(points, 40, expected_indices, expected_offsets);
+  for(unsigned int k : {1u, 10u, 40u})
+    for(unsigned int threads : {1u, 3u})
+    {
+      CAPTURE(k, threads);
+      SN::compute_k_nearest_neighbors<SN::Parallel_if_available_tag>(
+        points, k, indices, offsets,
+        SN::parameters::number_of_threads(threads, CGAL::parameters::point_map(Point_map())));
+      bool all_equal = true;
+      for(std::size_t i = 0; i < points.size(); ++i)
+        all_equal = all_equal && std::equal(indices.begin() + offsets[i], indices.begin() + offsets[i + 1],
+                                            expected_indices.begin() + expected_offsets[i]);
+      CHECK(all_equal);
+    }
+
+  std::vector<SN::internal::Double_point> copy;
+  for(const auto& p : points)
+    copy.emplace_back(p.first.x(), p.first.y(), p.first.z());
+  const SN::internal::Point_kd_tree tree(copy);
+  std::vector<SN::internal::Neighbor> found;
+  for(std::uint32_t i = 0; i < copy.size(); i += 3)
+  {
+    const double radius = std::sqrt(copy[i].x() * copy[i].x() + copy[i].y() * copy[i].y()) + 1.;
+    tree.ball(i, radius * radius, found);
+    std::size_t expected = 0;
+    for(std::uint32_t j = 0; j < copy.size(); ++j)
+      expected += std::size_t(j != i && CGAL::squared_distance(points[i].first, points[j].first) <= radius * radius);
+    REQUIRE(found.size() == expected);
+  }
+  // a ball holding every point: each node on the deepest paths leaves its other child to visit
+  for(std::uint32_t i = 0; i < copy.size(); i += 50)
+  {
+    tree.ball(i, std::ldexp(1., 820), found);
+    REQUIRE(found.size() == copy.size() - 1);
+  }
+  for(unsigned int threads : {2u, 3u, 0u})
+    CHECK(SN::internal::Point_kd_tree(copy, threads).leaf_order() == tree.leaf_order());
+}
+
 TEST_CASE("compute_k_nearest_neighbors: SPEC §2's rows, shared by several calls", "[neighborhoods]")
 {
   // a grid: many ties at equal distances, decided by index

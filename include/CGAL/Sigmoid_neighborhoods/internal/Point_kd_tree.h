@@ -67,21 +67,26 @@ inline void sort_by_nearness(std::vector<Neighbor>& neighbors)
 }
 
 // A kd-tree over point indices for the package's exact queries: the k nearest other points and the
-// balls of a point of the set, ordered by is_nearer(). Median splits on the widest side of each
-// node's box, leaves of at most LEAF_SIZE points. It holds the indices in leaf order and its nodes,
-// about 12 bytes per point, and reads the coordinates where they are (a copy in leaf order, 24 bytes
-// more per point, was no faster on scans, whose points come in acquisition order). The k nearest
-// are selected with the tie rule itself, so no query is repeated for ties. A node is skipped only
-// when it is farther than the current k-th neighbor; its lower bound is the sum of the squared gaps
-// per axis between the query and the node's slab (each child's slab ends at its extreme point along
-// the split axis), computed as a point's squared distance is, from rounded differences that are
-// monotone: it never exceeds the distance of a point inside. The squared distances are
-// (dx^2 + dy^2) + dz^2 of the coordinates' differences, as CGAL's Euclidean_distance computes them,
-// so results do not depend on the search structure.
+// balls of a point of the set, ordered by is_nearer(). Each node is split at the middle of its cell
+// along the cell's widest side (nanoflann's sliding midpoint: cells stay near cubes, so a query
+// compares fewer points than with median splits); deep in the tree the split is moved so that each
+// side keeps a quarter of the node's points, which bounds the depth on any input. Leaves of at most
+// LEAF_SIZE points. It holds the indices in leaf order and its nodes, about 9 bytes per point on a
+// scan, and reads the coordinates where they are (a copy in leaf order, 24 bytes more per point, was
+// no faster on scans, whose points come in acquisition order). The k nearest are selected with the
+// tie rule itself, so no query is repeated for ties. A node is skipped only when it is farther than
+// the current k-th neighbor; its lower bound is the sum of the squared gaps per axis between the
+// query and the node's slab (each child's slab ends at its extreme point along the split axis),
+// computed as a point's squared distance is, from rounded differences that are monotone: it never
+// exceeds the distance of a point inside. The squared distances are (dx^2 + dy^2) + dz^2 of the
+// coordinates' differences, as CGAL's Euclidean_distance computes them, so results do not depend on
+// the search structure.
 class Point_kd_tree
 {
 public:
-  static constexpr std::uint32_t LEAF_SIZE = 8;
+  // leaves of 8 to 32 points tried on a scan's 20 and 100 nearest: 24 the fastest (fewer nodes to
+  // walk outweigh the more points compared, up to there)
+  static constexpr std::uint32_t LEAF_SIZE = 24;
   // up to this many neighbors, a query keeps its candidates sorted; beyond, it selects them in bulk
   static constexpr std::size_t SORTED_INSERTION_K = 32;
 
@@ -116,32 +121,41 @@ private:
     std::uint32_t begin, end; // for an inner node, begin is the right child
     std::uint32_t axis;
   };
-
-  // A node to build: its id, its positions [begin, end).
-  struct Pending
+  // The box a node splits (not the tight box of its points): its middle is the split's first choice.
+  struct Cell
   {
-    std::uint32_t id, begin, end;
+    double low[3], high[3];
   };
-  // The nodes of a subtree of `count` positions (its nodes are numbered in preorder, so that a
-  // subtree's id and size place its siblings without building it).
-  static std::uint32_t subtree_nodes(std::uint32_t count);
-  // Builds the node `node`: a leaf, or a split and its children, returned to build later.
-  bool split(const Pending& node, Pending& left, Pending& right);
-  // Builds the subtree of `node` whole.
-  void build(const Pending& node);
-  // the squared distance from q to the point at position e, as every query computes it
-  double squared_distance_at(std::uint32_t e, const double* q) const
+  // A node of the top levels, split before the subtrees below them are built on the threads.
+  struct Top
   {
-    const Double_point& p = (*m_points)[m_index[e]];
-    const double dx = p.x() - q[0], dy = p.y() - q[1], dz = p.z() - q[2];
-    return dx * dx + dy * dy + dz * dz;
-  }
+    std::uint32_t begin, end;
+    std::size_t depth;
+    Cell cell;
+    Node node;
+    std::size_t children = 0; // the left child's position in the tops (the right one follows); 0: a subtree
+  };
+  // Splits at the cut down to FREE_DEPTH; below, each side keeps at least a quarter of the more than
+  // LEAF_SIZE points split, so that fewer than 2^32 points need at most 69 levels more.
+  static constexpr std::size_t FREE_DEPTH = 64;
+  static constexpr std::size_t MAX_DEPTH = FREE_DEPTH + 70;
+
+  // Splits the positions [begin, end) in `cell`: false for a leaf; otherwise the node (its right
+  // child to be set), its children's positions [begin, middle), [middle, end) and cells.
+  bool split(std::uint32_t begin, std::uint32_t end, const Cell& cell, std::size_t depth, Node& node,
+             std::uint32_t& middle, Cell& left, Cell& right);
+  // Appends the subtree of [begin, end) at `depth` to `nodes` in preorder, its ids counted from
+  // nodes.size()
+  void build(std::uint32_t begin, std::uint32_t end, const Cell& cell, std::size_t depth, std::vector<Node>& nodes);
+  // Appends the top `t` and the subtrees below it to m_nodes, in the preorder of build()
+  void assemble(const std::vector<Top>& tops, std::size_t t, std::vector<std::vector<Node>>& subtrees,
+                const std::vector<std::size_t>& subtree_of);
   static constexpr std::uint32_t NO_POINT = (std::numeric_limits<std::uint32_t>::max)();
   // The k nearest points to q other than point `i` (NO_POINT: any), k at most the points there are.
   void nearest_to(const double* q, std::uint32_t i, std::size_t k, std::vector<Neighbor>& result,
                   double squared_bound) const;
   template <typename Visit_leaf, typename Bound>
-  void descend(std::uint32_t node, const double* q, double* gap, const Visit_leaf& visit, const Bound& bound) const;
+  void walk(const double* q, const Visit_leaf& visit, const Bound& bound) const;
 
   std::vector<Node> m_nodes;
   const std::vector<Double_point>* m_points = nullptr;

@@ -12,6 +12,8 @@
 #include <CGAL/Sigmoid_neighborhoods/internal/Point_kd_tree.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
 #include <limits>
 #include <vector>
@@ -30,69 +32,92 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Point_kd_tree::Point_kd_tree(const std:
   m_index.resize(n);
   for(std::uint32_t i = 0; i < n; ++i)
     m_index[i] = i;
-  m_nodes.resize(subtree_nodes(n));
-  // The top levels split node by node, each level's nodes in parallel, until there are subtrees
-  // enough for every thread; then the subtrees in parallel. Each split reads and writes its own
-  // positions and nodes: the tree is the sequential one for any number of threads.
+  Cell root;
+  for(int d = 0; d < 3; ++d)
+  {
+    root.low[d] = (std::numeric_limits<double>::max)();
+    root.high[d] = -(std::numeric_limits<double>::max)();
+  }
+  for(const Double_point& p : points)
+    for(int d = 0; d < 3; ++d)
+    {
+      root.low[d] = (std::min)(root.low[d], p[d]);
+      root.high[d] = (std::max)(root.high[d], p[d]);
+    }
   if(threads == 1)
   {
-    build(Pending{0, 0, n});
+    build(0, n, root, 0, m_nodes);
+    m_nodes.shrink_to_fit();
     return;
   }
-  std::vector<Pending> level{Pending{0, 0, n}};
+  // The top levels split node by node, each level's nodes in parallel, until there are subtrees
+  // enough for every thread; then the subtrees in parallel, each in nodes of its own, put together
+  // in the preorder of the sequential build. Each split reads and writes its own positions: the tree
+  // is the sequential one for any number of threads.
+  std::vector<Top> tops{Top{0, n, 0, root, Node{0., 0., 0, n, 3}}};
+  std::vector<std::size_t> level{0}, subtree_roots;
   const std::size_t enough = 8 * std::size_t(threads == 0 ? 16 : threads);
-  while(!level.empty() && level.size() < enough)
+  for(std::size_t depth = 0; !level.empty() && subtree_roots.size() + level.size() < enough; ++depth)
   {
-    std::vector<Pending> children(2 * level.size(), Pending{0, 0, 0});
+    std::vector<Top> children(2 * level.size());
     std::vector<char> is_split(level.size(), 0);
     for_each_index<Parallel_if_available_tag>(
       level.size(), threads, [] { return 0; },
-      [&](std::size_t i, int) { is_split[i] = split(level[i], children[2 * i], children[2 * i + 1]); }, 1);
-    std::vector<Pending> next;
-    for(std::size_t i = 0; i < level.size(); ++i)
-      if(is_split[i])
+      [&](std::size_t l, int) {
+        Top& top = tops[level[l]];
+        std::uint32_t middle = 0;
+        Top& left = children[2 * l];
+        Top& right = children[2 * l + 1];
+        is_split[l] = split(top.begin, top.end, top.cell, depth, top.node, middle, left.cell, right.cell);
+        left.begin = top.begin;
+        left.end = right.begin = middle;
+        right.end = top.end;
+        left.depth = right.depth = depth + 1;
+      }, 1);
+    std::vector<std::size_t> next;
+    for(std::size_t l = 0; l < level.size(); ++l)
+      if(is_split[l])
       {
-        next.push_back(children[2 * i]);
-        next.push_back(children[2 * i + 1]);
+        tops[level[l]].children = tops.size();
+        for(int side = 0; side < 2; ++side)
+        {
+          next.push_back(tops.size());
+          tops.push_back(children[2 * l + std::size_t(side)]);
+        }
       }
+      else
+        subtree_roots.push_back(level[l]);
     level.swap(next);
   }
+  subtree_roots.insert(subtree_roots.end(), level.begin(), level.end());
+  std::vector<std::vector<Node>> subtrees(subtree_roots.size());
+  std::vector<std::size_t> subtree_of(tops.size(), 0);
+  for(std::size_t r = 0; r < subtree_roots.size(); ++r)
+    subtree_of[subtree_roots[r]] = r;
   for_each_index<Parallel_if_available_tag>(
-    level.size(), threads, [] { return 0; }, [&](std::size_t i, int) { build(level[i]); }, 1);
+    subtree_roots.size(), threads, [] { return 0; },
+    [&](std::size_t r, int) {
+      const Top& top = tops[subtree_roots[r]];
+      build(top.begin, top.end, top.cell, top.depth, subtrees[r]);
+    }, 1);
+  std::size_t nodes = tops.size() - subtree_roots.size();
+  for(const std::vector<Node>& subtree : subtrees)
+    nodes += subtree.size();
+  m_nodes.reserve(nodes);
+  assemble(tops, 0, subtrees, subtree_of);
 }
 
-CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION std::uint32_t Point_kd_tree::subtree_nodes(std::uint32_t count)
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION bool Point_kd_tree::split(std::uint32_t begin, std::uint32_t end,
+                                                                  const Cell& cell, std::size_t depth, Node& node, std::uint32_t& middle,
+                                                                  Cell& left, Cell& right)
 {
-  // nodes(m) = 1 + nodes(m / 2) + nodes(m - m / 2) above a leaf. The sizes of one depth differ by one
-  // at most (lows[d] and highs[d]), so the recursion meets two per depth: counted from the leaves up.
-  std::vector<std::uint32_t> lows, highs;
-  for(std::uint32_t low = count, high = count;; low /= 2, high -= high / 2)
+  const std::uint32_t count = end - begin;
+  if(count <= LEAF_SIZE)
   {
-    lows.push_back(low);
-    highs.push_back(high);
-    if(high <= LEAF_SIZE)
-      break;
-  }
-  std::uint32_t low_nodes = 1, high_nodes = 1; // the deepest sizes are leaves
-  for(std::size_t d = lows.size() - 1; d-- > 0;)
-  {
-    auto below = [&](std::uint32_t m) { return m == lows[d + 1] ? low_nodes : high_nodes; };
-    auto nodes = [&](std::uint32_t m) { return m <= LEAF_SIZE ? 1u : 1u + below(m / 2) + below(m - m / 2); };
-    const std::uint32_t new_low = nodes(lows[d]), new_high = nodes(highs[d]);
-    low_nodes = new_low;
-    high_nodes = new_high;
-  }
-  return low_nodes;
-}
-
-CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION bool Point_kd_tree::split(const Pending& node, Pending& left, Pending& right)
-{
-  const std::uint32_t begin = node.begin, end = node.end;
-  if(end - begin <= LEAF_SIZE)
-  {
-    m_nodes[node.id] = Node{0., 0., begin, end, 3};
+    node = Node{0., 0., begin, end, 3};
     return false;
   }
+  const std::vector<Double_point>& points = *m_points;
   double low[3], high[3];
   for(int d = 0; d < 3; ++d)
   {
@@ -102,70 +127,159 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION bool Point_kd_tree::split(const Pending
   for(std::uint32_t e = begin; e < end; ++e)
     for(int d = 0; d < 3; ++d)
     {
-      const double c = (*m_points)[m_index[e]][d];
+      const double c = points[m_index[e]][d];
       low[d] = (std::min)(low[d], c);
       high[d] = (std::max)(high[d], c);
     }
-  int axis = 0;
-  for(int d = 1; d < 3; ++d)
-    if(high[d] - low[d] > high[axis] - low[axis])
+  // among the cell's widest sides (to a relative 1e-5), the one its points spread most along;
+  // the points' widest side when they do not spread along those
+  double widest = 0.;
+  for(int d = 0; d < 3; ++d)
+    widest = (std::max)(widest, cell.high[d] - cell.low[d]);
+  int axis = -1;
+  for(int d = 0; d < 3; ++d)
+    if(cell.high[d] - cell.low[d] >= (1. - 1e-5) * widest && high[d] > low[d] &&
+       (axis < 0 || high[d] - low[d] > high[axis] - low[axis]))
       axis = d;
-  const std::uint32_t middle = begin + (end - begin) / 2;
-  const std::vector<Double_point>& points = *m_points;
+  if(axis < 0)
+  {
+    axis = 0;
+    for(int d = 1; d < 3; ++d)
+      if(high[d] - low[d] > high[axis] - low[axis])
+        axis = d;
+  }
+  const double cut = (std::min)((std::max)(0.5 * (cell.low[axis] + cell.high[axis]), low[axis]), high[axis]);
   auto coordinate = [&points, axis](std::uint32_t a) { return points[a][axis]; };
-  std::nth_element(m_index.begin() + begin, m_index.begin() + middle, m_index.begin() + end,
-                   [&coordinate](std::uint32_t a, std::uint32_t b) {
-                     const double ca = coordinate(a), cb = coordinate(b);
-                     return ca < cb || (ca == cb && a < b);
-                   });
-  double left_end = -(std::numeric_limits<double>::max)();
+  const auto first = m_index.begin() + begin, last = m_index.begin() + end;
+  const auto below = std::partition(first, last, [&](std::uint32_t a) { return coordinate(a) < cut; });
+  const auto at_most = std::partition(below, last, [&](std::uint32_t a) { return coordinate(a) <= cut; });
+  const std::uint32_t lim1 = std::uint32_t(below - first), lim2 = std::uint32_t(at_most - first);
+  std::uint32_t size = lim1 > count / 2 ? lim1 : lim2 < count / 2 ? lim2 : count / 2;
+  // below FREE_DEPTH the split stays where the cut puts it; deeper, each side keeps a quarter of the
+  // points (the nearest quarter, ties by index), which bounds the depth on any input
+  const std::uint32_t fewest = depth < FREE_DEPTH ? 0 : count / 4;
+  if(size < fewest || size > count - fewest)
+  {
+    size = size < fewest ? fewest : count - fewest;
+    std::nth_element(first, first + size, last, [&coordinate](std::uint32_t a, std::uint32_t b) {
+      const double ca = coordinate(a), cb = coordinate(b);
+      return ca < cb || (ca == cb && a < b);
+    });
+  }
+  middle = begin + size;
+  double left_end = -(std::numeric_limits<double>::max)(), right_begin = (std::numeric_limits<double>::max)();
   for(std::uint32_t e = begin; e < middle; ++e)
     left_end = (std::max)(left_end, coordinate(m_index[e]));
-  const double right_begin = coordinate(m_index[middle]);
-  left = Pending{node.id + 1, begin, middle};
-  right = Pending{node.id + 1 + subtree_nodes(middle - begin), middle, end};
-  m_nodes[node.id] = Node{left_end, right_begin, right.id, 0, std::uint32_t(axis)};
+  for(std::uint32_t e = middle; e < end; ++e)
+    right_begin = (std::min)(right_begin, coordinate(m_index[e]));
+  left = cell;
+  right = cell;
+  // the cells meet at the cut, or between the sides when the split moved off it
+  const double border = left_end <= cut && cut <= right_begin ? cut : 0.5 * (left_end + right_begin);
+  left.high[axis] = border;
+  right.low[axis] = border;
+  node = Node{left_end, right_begin, 0, 0, std::uint32_t(axis)};
   return true;
 }
 
-CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::build(const Pending& node)
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::build(std::uint32_t begin, std::uint32_t end,
+                                                                  const Cell& cell, std::size_t depth,
+                                                                  std::vector<Node>& nodes)
 {
-  Pending left, right;
-  if(!split(node, left, right))
+  const std::size_t id = nodes.size();
+  nodes.emplace_back();
+  Node node;
+  std::uint32_t middle = 0;
+  Cell left, right;
+  if(!split(begin, end, cell, depth, node, middle, left, right))
+  {
+    nodes[id] = node;
     return;
-  build(left);
-  build(right);
+  }
+  build(begin, middle, left, depth + 1, nodes);
+  node.begin = std::uint32_t(nodes.size());
+  build(middle, end, right, depth + 1, nodes);
+  nodes[id] = node;
 }
 
-// Visits the leaves of node `id` that are not farther than bound(), nearer child first; `gap`
-// holds the gaps per axis between q and the node's slab (restored on return).
-template <typename Visit_leaf, typename Bound>
-void Point_kd_tree::descend(std::uint32_t id, const double* q, double* gap, const Visit_leaf& visit,
-                            const Bound& bound) const
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::assemble(const std::vector<Top>& tops, std::size_t t,
+                                                                     std::vector<std::vector<Node>>& subtrees,
+                                                                     const std::vector<std::size_t>& subtree_of)
 {
-  const Node& node = m_nodes[id];
-  if(node.axis == 3)
+  const Top& top = tops[t];
+  if(top.children == 0)
   {
-    visit(node.begin, node.end);
+    // a subtree's ids count from its first node: moved to where it lands
+    const std::uint32_t offset = std::uint32_t(m_nodes.size());
+    for(Node node : subtrees[subtree_of[t]])
+    {
+      if(node.axis != 3)
+        node.begin += offset;
+      m_nodes.push_back(node);
+    }
+    std::vector<Node>().swap(subtrees[subtree_of[t]]);
     return;
   }
-  const std::uint32_t axis = node.axis;
-  const double c = q[axis], parent_gap = gap[axis];
-  // the gap of each child along the axis: wider than the parent's only beyond the child's end
-  const double left_gap = c > node.left_end ? c - node.left_end : parent_gap;
-  const double right_gap = c < node.right_begin ? node.right_begin - c : parent_gap;
-  const bool left_first = left_gap <= right_gap;
-  const std::uint32_t children[2] = {id + 1, node.begin};
-  const double gaps[2] = {left_gap, right_gap};
-  for(int side = 0; side < 2; ++side)
+  const std::size_t id = m_nodes.size();
+  m_nodes.push_back(top.node);
+  assemble(tops, top.children, subtrees, subtree_of);
+  m_nodes[id].begin = std::uint32_t(m_nodes.size());
+  assemble(tops, top.children + 1, subtrees, subtree_of);
+}
+
+// Visits the leaves that are not farther than bound() from q, the nearer child first (a stack of the
+// farther ones, each tested again when its turn comes, as the bound may have shrunk). A node's lower
+// bound is the sum of the squared gaps per axis between q and its slab.
+template <typename Visit_leaf, typename Bound>
+CGAL_SIGMOID_NEIGHBORHOODS_ALWAYS_INLINE void Point_kd_tree::walk(const double* q, const Visit_leaf& visit, const Bound& bound) const
+{
+  struct Pending
   {
-    const int child = left_first ? side : 1 - side;
-    gap[axis] = gaps[child];
-    // `<=`: a point at the bound may still win its tie by index
-    if(gap[0] * gap[0] + gap[1] * gap[1] + gap[2] * gap[2] <= bound())
-      descend(children[child], q, gap, visit, bound);
+    std::uint32_t node;
+    double gap[3];
+    double lower;
+  };
+  Pending stack[MAX_DEPTH + 1];
+  std::size_t top = 0;
+  stack[top++] = Pending{0, {0., 0., 0.}, 0.};
+  const Node* nodes = m_nodes.data();
+  while(top > 0)
+  {
+    Pending p = stack[--top];
+    // `<=` everywhere: a point at the bound may still win its tie by index
+    if(!(p.lower <= bound()))
+      continue;
+    bool reached = true;
+    while(nodes[p.node].axis != 3)
+    {
+      const Node& node = nodes[p.node];
+      const std::uint32_t axis = node.axis;
+      const double c = q[axis], parent_gap = p.gap[axis];
+      // the gap of each child along the axis: wider than the parent's only beyond the child's end
+      const double left_gap = c > node.left_end ? c - node.left_end : parent_gap;
+      const double right_gap = c < node.right_begin ? node.right_begin - c : parent_gap;
+      const bool left_first = left_gap <= right_gap;
+      Pending far = p;
+      far.node = left_first ? node.begin : p.node + 1;
+      far.gap[axis] = left_first ? right_gap : left_gap;
+      far.lower = far.gap[0] * far.gap[0] + far.gap[1] * far.gap[1] + far.gap[2] * far.gap[2];
+      if(far.lower <= bound())
+      {
+        CGAL_assertion(top <= MAX_DEPTH);
+        stack[top++] = far;
+      }
+      p.node = left_first ? p.node + 1 : node.begin;
+      p.gap[axis] = left_first ? left_gap : right_gap;
+      p.lower = p.gap[0] * p.gap[0] + p.gap[1] * p.gap[1] + p.gap[2] * p.gap[2];
+      if(!(p.lower <= bound()))
+      {
+        reached = false;
+        break;
+      }
+    }
+    if(reached)
+      visit(nodes[p.node].begin, nodes[p.node].end);
   }
-  gap[axis] = parent_gap;
 }
 
 CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest(std::uint32_t i, std::size_t k,
@@ -185,6 +299,13 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest(const Doubl
   nearest_to(q, NO_POINT, (std::min)(k, m_index.size()), result, (std::numeric_limits<double>::infinity)());
 }
 
+// the squared distance from q to p, as every query computes it
+inline double squared_distance_to(const Double_point& p, const double* q)
+{
+  const double dx = p.x() - q[0], dy = p.y() - q[1], dz = p.z() - q[2];
+  return dx * dx + dy * dy + dz * dz;
+}
+
 CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest_to(const double* q, std::uint32_t i, std::size_t k,
                                                                        std::vector<Neighbor>& result,
                                                                        double squared_bound) const
@@ -192,37 +313,50 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest_to(const do
   result.clear();
   if(k == 0)
     return;
-  double gap[3] = {0., 0., 0.};
+  const std::uint32_t* index = m_index.data();
+  const Double_point* points = m_points->data();
   if(k <= SORTED_INSERTION_K)
   {
-    // few neighbors: kept sorted, each candidate inserted in place
+    // few neighbors: kept sorted in local arrays, each candidate inserted in place
+    double distance[SORTED_INSERTION_K];
+    std::uint32_t nearest[SORTED_INSERTION_K];
+    std::size_t size = 0;
     double threshold = squared_bound;
-    result.reserve(k + 1);
     auto visit = [&](std::uint32_t begin, std::uint32_t end) {
       for(std::uint32_t e = begin; e < end; ++e)
       {
-        const double d2 = squared_distance_at(e, q);
-        if(d2 > threshold || m_index[e] == i)
+        const std::uint32_t j = index[e];
+        const double d2 = squared_distance_to(points[j], q);
+        if(d2 > threshold || j == i)
           continue;
-        const Neighbor candidate{m_index[e], d2};
-        if(result.size() == k)
+        if(size == k)
         {
-          if(!is_nearer(candidate, result.back()))
+          // d2 is at most the k-th distance: nearer, unless it ties and loses by index
+          if(d2 == distance[k - 1] && j > nearest[k - 1])
             continue;
-          result.pop_back();
+          --size;
         }
-        std::size_t hole = result.size();
-        result.push_back(candidate);
-        for(; hole > 0 && is_nearer(candidate, result[hole - 1]); --hole)
-          result[hole] = result[hole - 1];
-        result[hole] = candidate;
-        if(result.size() == k)
-          threshold = result.back().squared_distance;
+        std::size_t hole = size;
+        for(; hole > 0 && (distance[hole - 1] > d2 || (distance[hole - 1] == d2 && nearest[hole - 1] > j)); --hole)
+        {
+          distance[hole] = distance[hole - 1];
+          nearest[hole] = nearest[hole - 1];
+        }
+        distance[hole] = d2;
+        nearest[hole] = j;
+        if(++size == k)
+          threshold = distance[k - 1];
       }
     };
-    descend(0, q, gap, visit, [&] { return threshold; });
-    if(result.size() < k) // the caller's bound was too small
+    walk(q, visit, [&] { return threshold; });
+    if(size < k) // the caller's bound was too small
+    {
       nearest_to(q, i, k, result, (std::numeric_limits<double>::infinity)());
+      return;
+    }
+    result.resize(k);
+    for(std::size_t e = 0; e < k; ++e)
+      result[e] = Neighbor{nearest[e], distance[e]};
     return;
   }
   // Candidates are gathered unordered below a threshold, the k-th nearest distance among those
@@ -243,15 +377,15 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest_to(const do
   auto visit = [&](std::uint32_t begin, std::uint32_t end) {
     for(std::uint32_t e = begin; e < end; ++e)
     {
-      const double d2 = squared_distance_at(e, q);
-      if(d2 <= threshold && m_index[e] != i)
-        result.push_back(Neighbor{m_index[e], d2});
+      const std::uint32_t j = index[e];
+      const double d2 = squared_distance_to(points[j], q);
+      if(d2 <= threshold && j != i)
+        result.push_back(Neighbor{j, d2});
     }
     if(result.size() >= cut_at)
       keep_nearest();
   };
-  // `<=` in descend(): a point at the threshold may still win its tie by index
-  descend(0, q, gap, visit, [&] { return threshold; });
+  walk(q, visit, [&] { return threshold; });
   if(result.size() < k) // the caller's bound was too small
   {
     nearest_to(q, i, k, result, (std::numeric_limits<double>::infinity)());
@@ -270,16 +404,18 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::ball(std::uint32_t 
     return;
   const Double_point& query = (*m_points)[i];
   const double q[3] = {query.x(), query.y(), query.z()};
+  const std::uint32_t* index = m_index.data();
+  const Double_point* points = m_points->data();
   auto visit = [&](std::uint32_t begin, std::uint32_t end) {
     for(std::uint32_t e = begin; e < end; ++e)
     {
-      const double d2 = squared_distance_at(e, q);
-      if(d2 <= squared_radius && m_index[e] != i)
-        result.push_back(Neighbor{m_index[e], d2});
+      const std::uint32_t j = index[e];
+      const double d2 = squared_distance_to(points[j], q);
+      if(d2 <= squared_radius && j != i)
+        result.push_back(Neighbor{j, d2});
     }
   };
-  double gap[3] = {0., 0., 0.};
-  descend(0, q, gap, visit, [squared_radius] { return squared_radius; });
+  walk(q, visit, [squared_radius] { return squared_radius; });
   sort_by_nearness(result);
 }
 
