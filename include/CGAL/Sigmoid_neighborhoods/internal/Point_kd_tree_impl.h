@@ -44,10 +44,14 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Point_kd_tree::Point_kd_tree(const std:
       root.low[d] = (std::min)(root.low[d], p[d]);
       root.high[d] = (std::max)(root.high[d], p[d]);
     }
+  // Leaves hold 8 points or more on the scans and meshes measured (13 on average on a scan): room for
+  // that many, so that the nodes are not moved while they are built (a copy would be the peak of a
+  // search's memory).
+  const auto room = [](std::uint32_t count) { return std::size_t(count) / 4 + 1; };
   if(threads == 1)
   {
+    m_nodes.reserve(room(n));
     build(0, n, root, 0, m_nodes);
-    m_nodes.shrink_to_fit();
     return;
   }
   // The top levels split node by node, each level's nodes in parallel, until there are subtrees
@@ -98,7 +102,9 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Point_kd_tree::Point_kd_tree(const std:
     subtree_roots.size(), threads, [] { return 0; },
     [&](std::size_t r, int) {
       const Top& top = tops[subtree_roots[r]];
+      subtrees[r].reserve(room(top.end - top.begin));
       build(top.begin, top.end, top.cell, top.depth, subtrees[r]);
+      subtrees[r].shrink_to_fit(); // only the nodes, while the others are built and put together
     }, 1);
   std::size_t nodes = tops.size() - subtree_roots.size();
   for(const std::vector<Node>& subtree : subtrees)
@@ -269,7 +275,10 @@ CGAL_SIGMOID_NEIGHBORHOODS_ALWAYS_INLINE void Point_kd_tree::walk(const double* 
         stack[top++] = far;
       }
       p.node = left_first ? p.node + 1 : node.begin;
-      p.gap[axis] = left_first ? left_gap : right_gap;
+      const double near_gap = left_first ? left_gap : right_gap;
+      if(near_gap == parent_gap) // q within the nearer child's slab: the same bound, already tested
+        continue;
+      p.gap[axis] = near_gap;
       p.lower = p.gap[0] * p.gap[0] + p.gap[1] * p.gap[1] + p.gap[2] * p.gap[2];
       if(!(p.lower <= bound()))
       {
@@ -310,9 +319,11 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest_to(const do
                                                                        std::vector<Neighbor>& result,
                                                                        double squared_bound) const
 {
-  result.clear();
   if(k == 0)
+  {
+    result.clear();
     return;
+  }
   const std::uint32_t* index = m_index.data();
   const Double_point* points = m_points->data();
   if(k <= SORTED_INSERTION_K)
@@ -354,11 +365,12 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::nearest_to(const do
       nearest_to(q, i, k, result, (std::numeric_limits<double>::infinity)());
       return;
     }
-    result.resize(k);
+    result.resize(k); // nothing to do when the previous query's result had k too
     for(std::size_t e = 0; e < k; ++e)
       result[e] = Neighbor{nearest[e], distance[e]};
     return;
   }
+  result.clear();
   // Candidates are gathered unordered below a threshold, the k-th nearest distance among those
   // kept, and cut down to the k nearest (the tie rule decides) as soon as k are found, so that the
   // threshold prunes early, then whenever they reach 2k: far cheaper for large k than a heap, which
