@@ -1204,6 +1204,34 @@ TEST_CASE("the kd-tree on points that middle cuts would split off one at a time"
   }
   for(unsigned int threads : {2u, 3u, 0u})
     CHECK(SN::internal::Point_kd_tree(copy, threads).leaf_order() == tree.leaf_order());
+
+  // coordinates at the ends of the doubles: the middle of a cell is taken without overflow (its
+  // distances overflow to infinity, ties decided by index)
+  const double big = (std::numeric_limits<double>::max)();
+  std::vector<SN::internal::Double_point> extreme;
+  for(int i = 0; i < 300; ++i)
+    extreme.emplace_back(i % 3 == 0 ? big : i % 3 == 1 ? -big : unit(rng), i % 5 == 0 ? -big : unit(rng) * 1e300,
+                         double(i % 7));
+  const SN::internal::Point_kd_tree extreme_tree(extreme, 2);
+  bool same = true;
+  for(std::uint32_t i = 0; i < extreme.size(); ++i)
+  {
+    extreme_tree.nearest(i, 12, found);
+    std::vector<std::pair<double, std::uint32_t>> expected;
+    for(std::uint32_t j = 0; j < extreme.size(); ++j)
+      if(j != i)
+      {
+        const double dx = extreme[j].x() - extreme[i].x(), dy = extreme[j].y() - extreme[i].y(),
+                     dz = extreme[j].z() - extreme[i].z();
+        expected.emplace_back(dx * dx + dy * dy + dz * dz, j);
+      }
+    std::sort(expected.begin(), expected.end());
+    same = same && found.size() == 12;
+    for(std::size_t t = 0; same && t < 12; ++t)
+      same = found[t].index == expected[t].second;
+  }
+  CHECK(same);
+  CHECK(extreme_tree.leaf_order() == SN::internal::Point_kd_tree(extreme).leaf_order());
 }
 
 TEST_CASE("compute_k_nearest_neighbors: SPEC §2's rows, shared by several calls", "[neighborhoods]")

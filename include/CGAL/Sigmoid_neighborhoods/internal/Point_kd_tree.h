@@ -71,7 +71,7 @@ inline void sort_by_nearness(std::vector<Neighbor>& neighbors)
 // along the cell's widest side (nanoflann's sliding midpoint: cells stay near cubes, so a query
 // compares fewer points than with median splits); deep in the tree the split is moved so that each
 // side keeps a quarter of the node's points, which bounds the depth on any input. Leaves of at most
-// LEAF_SIZE points. It holds the indices in leaf order and its nodes, about 9 bytes per point on a
+// LEAF_SIZE points. It holds the indices in leaf order and its nodes, 9 to 12 bytes per point on a
 // scan, and reads the coordinates where they are (a copy in leaf order, 24 bytes more per point, was
 // no faster on scans, whose points come in acquisition order). The k nearest are selected with the
 // tie rule itself, so no query is repeated for ties. A node is skipped only when it is farther than

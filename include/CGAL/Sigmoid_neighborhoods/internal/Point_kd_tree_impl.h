@@ -154,13 +154,16 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION bool Point_kd_tree::split(std::uint32_t
       if(high[d] - low[d] > high[axis] - low[axis])
         axis = d;
   }
-  const double cut = (std::min)((std::max)(0.5 * (cell.low[axis] + cell.high[axis]), low[axis]), high[axis]);
+  // halves first: the middle of a cell from -DBL_MAX to DBL_MAX is 0, not an overflow
+  const double cut = (std::min)((std::max)(0.5 * cell.low[axis] + 0.5 * cell.high[axis], low[axis]), high[axis]);
   auto coordinate = [&points, axis](std::uint32_t a) { return points[a][axis]; };
   const auto first = m_index.begin() + begin, last = m_index.begin() + end;
   const auto below = std::partition(first, last, [&](std::uint32_t a) { return coordinate(a) < cut; });
   const auto at_most = std::partition(below, last, [&](std::uint32_t a) { return coordinate(a) <= cut; });
   const std::uint32_t lim1 = std::uint32_t(below - first), lim2 = std::uint32_t(at_most - first);
   std::uint32_t size = lim1 > count / 2 ? lim1 : lim2 < count / 2 ? lim2 : count / 2;
+  if(size == 0 || size == count) // cannot happen with finite coordinates; never an empty side
+    size = count / 2;
   // below FREE_DEPTH the split stays where the cut puts it; deeper, each side keeps a quarter of the
   // points (the nearest quarter, ties by index), which bounds the depth on any input
   const std::uint32_t fewest = depth < FREE_DEPTH ? 0 : count / 4;
@@ -181,7 +184,7 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION bool Point_kd_tree::split(std::uint32_t
   left = cell;
   right = cell;
   // the cells meet at the cut, or between the sides when the split moved off it
-  const double border = left_end <= cut && cut <= right_begin ? cut : 0.5 * (left_end + right_begin);
+  const double border = left_end <= cut && cut <= right_begin ? cut : 0.5 * left_end + 0.5 * right_begin;
   left.high[axis] = border;
   right.low[axis] = border;
   node = Node{left_end, right_begin, 0, 0, std::uint32_t(axis)};
