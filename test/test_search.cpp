@@ -1202,8 +1202,26 @@ TEST_CASE("the kd-tree on points that middle cuts would split off one at a time"
     tree.ball(i, std::ldexp(1., 820), found);
     REQUIRE(found.size() == copy.size() - 1);
   }
+  // built on threads (its subtrees overflow the room a tree of large leaves would take): the same
+  // tree, the same neighbors
   for(unsigned int threads : {2u, 3u, 0u})
-    CHECK(SN::internal::Point_kd_tree(copy, threads).leaf_order() == tree.leaf_order());
+  {
+    const SN::internal::Point_kd_tree on_threads(copy, threads);
+    CHECK(on_threads.leaf_order() == tree.leaf_order());
+    std::vector<SN::internal::Neighbor> from_threads;
+    bool same = true;
+    for(std::uint32_t i = 0; i < copy.size(); i += 11)
+    {
+      tree.nearest(i, 25, found);
+      on_threads.nearest(i, 25, from_threads);
+      same = same && found.size() == 25 && from_threads.size() == 25 &&
+             std::equal(found.begin(), found.end(), from_threads.begin(),
+                        [](const auto& a, const auto& b) { return a.index == b.index; });
+      on_threads.ball(i, std::ldexp(1., 820), from_threads);
+      same = same && from_threads.size() == copy.size() - 1;
+    }
+    CHECK(same);
+  }
 
   // coordinates at the ends of the doubles: the middle of a cell is taken without overflow (its
   // distances overflow to infinity, ties decided by index)

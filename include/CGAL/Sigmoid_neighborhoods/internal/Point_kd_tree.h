@@ -144,10 +144,46 @@ private:
   // child to be set), its children's positions [begin, middle), [middle, end) and cells.
   bool split(std::uint32_t begin, std::uint32_t end, const Cell& cell, std::size_t depth, Node& node,
              std::uint32_t& middle, Cell& left, Cell& right);
-  // Appends the subtree of [begin, end) at `depth` to `nodes` in preorder, its ids counted from
-  // nodes.size()
-  void build(std::uint32_t begin, std::uint32_t end, const Cell& cell, std::size_t depth, std::vector<Node>& nodes);
-  // Appends the top `t` and the subtrees below it to m_nodes, in the preorder of build()
+  // Where build() appends a subtree's nodes: a slice of m_nodes with room for `room` of them, then,
+  // past it, a vector of their own (spilled), with room for `spill_room` reserved.
+  class Node_sink
+  {
+  public:
+    Node_sink(Node* slice, std::size_t room, std::size_t spill_room = 0) : m_slice(slice), m_room(room)
+    {
+      m_spill.reserve(spill_room);
+    }
+    std::size_t size() const { return m_size; }
+    Node& operator[](std::size_t id) { return m_spilled ? m_spill[id] : m_slice[id]; }
+    std::size_t append()
+    {
+      if(m_size == m_room && !m_spilled)
+      {
+        m_spill.assign(m_slice, m_slice + m_size);
+        m_spilled = true;
+      }
+      if(m_spilled)
+        m_spill.emplace_back();
+      return m_size++;
+    }
+    bool spilled() const { return m_spilled; }
+    // the nodes, wherever they are
+    std::vector<Node> take() { return m_spilled ? std::move(m_spill) : std::vector<Node>(m_slice, m_slice + m_size); }
+
+  private:
+    Node* m_slice;
+    std::size_t m_room, m_size = 0;
+    bool m_spilled = false;
+    std::vector<Node> m_spill;
+  };
+  // Appends the subtree of [begin, end) at `depth` to `nodes` in preorder, its ids counted from the
+  // first node of `nodes`
+  void build(std::uint32_t begin, std::uint32_t end, const Cell& cell, std::size_t depth, Node_sink& nodes);
+  // Moves the top `t` and the subtrees below it down to `next` in m_nodes, in the preorder of build(),
+  // each node's right child moved with it; returns the position after them
+  std::size_t place(const std::vector<Top>& tops, std::size_t t, const std::vector<std::size_t>& slice_of,
+                    const std::vector<Node_sink>& sinks, const std::vector<std::size_t>& sink_of, std::size_t next);
+  // The same, from the subtrees' own vectors, appended to m_nodes (when one did not fit in its slice)
   void assemble(const std::vector<Top>& tops, std::size_t t, std::vector<std::vector<Node>>& subtrees,
                 const std::vector<std::size_t>& subtree_of);
   static constexpr std::uint32_t NO_POINT = (std::numeric_limits<std::uint32_t>::max)();

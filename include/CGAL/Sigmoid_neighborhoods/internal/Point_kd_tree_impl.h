@@ -15,6 +15,7 @@
 #include <CGAL/assertions.h>
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -45,19 +46,22 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Point_kd_tree::Point_kd_tree(const std:
       root.high[d] = (std::max)(root.high[d], p[d]);
     }
   // Leaves hold 8 points or more on the scans and meshes measured (13 on average on a scan): room for
-  // that many, so that the nodes are not moved while they are built (a copy would be the peak of a
-  // search's memory).
+  // nodes of that many, so that no node is copied while the tree is built (a copy would be the peak
+  // of a search's memory).
   const auto room = [](std::uint32_t count) { return std::size_t(count) / 4 + 1; };
   if(threads == 1)
   {
-    m_nodes.reserve(room(n));
-    build(0, n, root, 0, m_nodes);
+    // a vector of its own from the start, its room reserved: the pages of the room it does not use
+    // are never touched
+    Node_sink sink(nullptr, 0, room(n));
+    build(0, n, root, 0, sink);
+    m_nodes = sink.take();
     return;
   }
   // The top levels split node by node, each level's nodes in parallel, until there are subtrees
-  // enough for every thread; then the subtrees in parallel, each in nodes of its own, put together
-  // in the preorder of the sequential build. Each split reads and writes its own positions: the tree
-  // is the sequential one for any number of threads.
+  // enough for every thread; then the subtrees in parallel, each in a slice of m_nodes laid out in
+  // the preorder of the sequential build, and moved down together at the end. Each split reads and
+  // writes its own positions: the tree is the sequential one for any number of threads.
   std::vector<Top> tops{Top{0, n, 0, root, Node{0., 0., 0, n, 3}}};
   std::vector<std::size_t> level{0}, subtree_roots;
   const std::size_t enough = 8 * std::size_t(threads == 0 ? 16 : threads);
@@ -94,23 +98,51 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Point_kd_tree::Point_kd_tree(const std:
     level.swap(next);
   }
   subtree_roots.insert(subtree_roots.end(), level.begin(), level.end());
-  std::vector<std::vector<Node>> subtrees(subtree_roots.size());
-  std::vector<std::size_t> subtree_of(tops.size(), 0);
+  // each top's place in m_nodes, in preorder: one node for a split, a slice for a subtree
+  std::vector<std::size_t> slice_of(tops.size(), 0), sink_of(tops.size(), 0);
   for(std::size_t r = 0; r < subtree_roots.size(); ++r)
-    subtree_of[subtree_roots[r]] = r;
+    sink_of[subtree_roots[r]] = r;
+  std::size_t total = 0;
+  std::vector<std::size_t> preorder{0};
+  while(!preorder.empty())
+  {
+    const std::size_t t = preorder.back();
+    preorder.pop_back();
+    slice_of[t] = total;
+    if(tops[t].children == 0)
+      total += room(tops[t].end - tops[t].begin);
+    else
+    {
+      ++total;
+      preorder.push_back(tops[t].children + 1);
+      preorder.push_back(tops[t].children);
+    }
+  }
+  m_nodes.resize(total);
+  std::vector<Node_sink> sinks;
+  sinks.reserve(subtree_roots.size());
+  for(std::size_t t : subtree_roots)
+    sinks.emplace_back(m_nodes.data() + slice_of[t], room(tops[t].end - tops[t].begin));
   for_each_index<Parallel_if_available_tag>(
     subtree_roots.size(), threads, [] { return 0; },
     [&](std::size_t r, int) {
       const Top& top = tops[subtree_roots[r]];
-      subtrees[r].reserve(room(top.end - top.begin));
-      build(top.begin, top.end, top.cell, top.depth, subtrees[r]);
-      subtrees[r].shrink_to_fit(); // only the nodes, while the others are built and put together
+      build(top.begin, top.end, top.cell, top.depth, sinks[r]);
     }, 1);
+  if(std::none_of(sinks.begin(), sinks.end(), [](const Node_sink& sink) { return sink.spilled(); }))
+  {
+    m_nodes.resize(place(tops, 0, slice_of, sinks, sink_of, 0));
+    return;
+  }
+  std::vector<std::vector<Node>> subtrees;
+  for(Node_sink& sink : sinks)
+    subtrees.push_back(sink.take());
+  std::vector<Node>().swap(m_nodes);
   std::size_t nodes = tops.size() - subtree_roots.size();
   for(const std::vector<Node>& subtree : subtrees)
     nodes += subtree.size();
   m_nodes.reserve(nodes);
-  assemble(tops, 0, subtrees, subtree_of);
+  assemble(tops, 0, subtrees, sink_of);
 }
 
 CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION bool Point_kd_tree::split(std::uint32_t begin, std::uint32_t end,
@@ -193,10 +225,9 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION bool Point_kd_tree::split(std::uint32_t
 
 CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::build(std::uint32_t begin, std::uint32_t end,
                                                                   const Cell& cell, std::size_t depth,
-                                                                  std::vector<Node>& nodes)
+                                                                  Node_sink& nodes)
 {
-  const std::size_t id = nodes.size();
-  nodes.emplace_back();
+  const std::size_t id = nodes.append();
   Node node;
   std::uint32_t middle = 0;
   Cell left, right;
@@ -209,6 +240,32 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::build(std::uint32_t
   node.begin = std::uint32_t(nodes.size());
   build(middle, end, right, depth + 1, nodes);
   nodes[id] = node;
+}
+
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION std::size_t Point_kd_tree::place(const std::vector<Top>& tops, std::size_t t,
+                                                                         const std::vector<std::size_t>& slice_of,
+                                                                         const std::vector<Node_sink>& sinks,
+                                                                         const std::vector<std::size_t>& sink_of,
+                                                                         std::size_t next)
+{
+  // Every place before this top took at most its room, so `next` is at most the top's slice: the
+  // nodes move down, over places already moved.
+  const Top& top = tops[t];
+  if(top.children == 0)
+  {
+    const std::size_t size = sinks[sink_of[t]].size();
+    if(next != slice_of[t])
+      std::memmove(static_cast<void*>(m_nodes.data() + next), m_nodes.data() + slice_of[t], size * sizeof(Node));
+    for(std::size_t e = next; e < next + size; ++e)
+      if(m_nodes[e].axis != 3)
+        m_nodes[e].begin += std::uint32_t(next);
+    return next + size;
+  }
+  const std::size_t id = next;
+  m_nodes[id] = top.node;
+  const std::size_t right = place(tops, top.children, slice_of, sinks, sink_of, id + 1);
+  m_nodes[id].begin = std::uint32_t(right);
+  return place(tops, top.children + 1, slice_of, sinks, sink_of, right);
 }
 
 CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Point_kd_tree::assemble(const std::vector<Top>& tops, std::size_t t,

@@ -187,9 +187,9 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION std::size_t orient_along_spanning_fores
 
   // The forest's edges out of each point, and the seed of each tree: its highest point, the first
   // of the highest by index (as CGAL's mst_orient_normals() takes it).
+  std::vector<std::uint32_t> root(n);
   Neighbor_lists tree;
   tree.offsets.assign(n + 1, 0);
-  std::vector<std::uint32_t> root(n);
   std::iota(root.begin(), root.end(), std::uint32_t(0));
   auto find = [&root](std::uint32_t v) {
     while(root[v] != v)
