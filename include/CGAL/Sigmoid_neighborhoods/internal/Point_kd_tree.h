@@ -138,6 +138,7 @@ private:
   // Splits at the cut down to FREE_DEPTH; below, each side keeps at least a quarter of the more than
   // LEAF_SIZE points split, so that fewer than 2^32 points need at most 69 levels more.
   static constexpr std::size_t FREE_DEPTH = 64;
+  // the walk's stack holds at most one farther child per level of the path it follows
   static constexpr std::size_t MAX_DEPTH = FREE_DEPTH + 70;
 
   // Splits the positions [begin, end) in `cell`: false for a leaf; otherwise the node (its right
