@@ -187,7 +187,7 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION std::size_t orient_along_spanning_fores
 
   // The forest's edges out of each point, and the seed of each tree: its highest point, the first
   // of the highest by index (as CGAL's mst_orient_normals() takes it).
-  std::vector<std::uint32_t> root(n);
+  std::vector<std::uint32_t> root(n); // before the offsets' n + 1: GCC 12 then sees no size overflow to warn of
   Neighbor_lists tree;
   tree.offsets.assign(n + 1, 0);
   std::iota(root.begin(), root.end(), std::uint32_t(0));
