@@ -41,6 +41,24 @@ namespace SN = CGAL::Sigmoid_neighborhoods;
 typedef SN::Oriented_point_set::Point_3 Point;
 typedef SN::Oriented_point_set::Vector_3 Vector;
 
+// One to three random edits of `text` at or after `first`: a character of `alphabet` put in place of
+// one, inserted, a character removed, or the text cut there.
+void mutate(std::string& text, std::size_t first, const std::string& alphabet, std::mt19937& rng)
+{
+  for(std::size_t edits = 1 + rng() % 3; edits > 0 && text.size() > first; --edits)
+  {
+    const std::size_t at = first + rng() % (text.size() - first);
+    const char c = alphabet[rng() % alphabet.size()];
+    switch(rng() % 4)
+    {
+    case 0: text[at] = c; break;
+    case 1: text.insert(text.begin() + std::ptrdiff_t(at), c); break;
+    case 2: text.erase(at, 1); break;
+    default: text.resize(at); break;
+    }
+  }
+}
+
 struct Read
 {
   bool taken = false; // by the binary path
@@ -263,19 +281,7 @@ TEST_CASE("ASCII PLY: files it might read otherwise are left to CGAL's readers; 
   for(std::size_t m = 0; m < mutants; ++m)
   {
     std::string text = seeds[m % seeds.size()];
-    const std::size_t body = text.find("end_header") + 11;
-    for(std::size_t edits = 1 + rng() % 3; edits > 0 && text.size() > body; --edits)
-    {
-      const std::size_t at = body + rng() % (text.size() - body);
-      const char c = alphabet[rng() % alphabet.size()];
-      switch(rng() % 4)
-      {
-      case 0: text[at] = c; break;
-      case 1: text.insert(text.begin() + std::ptrdiff_t(at), c); break;
-      case 2: text.erase(at, 1); break;
-      default: text.resize(at); break;
-      }
-    }
+    mutate(text, text.find("end_header") + 11, alphabet, rng);
     const std::string path = folder + "/ascii_mutant.ply";
     std::ofstream(path, std::ios::binary) << text;
     const Read fast = read_ascii(path, unsigned(1 + m % 3));
@@ -603,18 +609,7 @@ TEST_CASE("OFF and OBJ: on mutated files the fast readers give CGAL's soup or le
   {
     const auto& seed = seeds[m % seeds.size()];
     std::string text = seed.second;
-    for(std::size_t edits = 1 + rng() % 3; edits > 0 && !text.empty(); --edits)
-    {
-      const std::size_t at = rng() % text.size();
-      const char c = alphabet[rng() % alphabet.size()];
-      switch(rng() % 4)
-      {
-      case 0: text[at] = c; break;
-      case 1: text.insert(text.begin() + std::ptrdiff_t(at), c); break;
-      case 2: text.erase(at, 1); break;
-      default: text.resize(at); break;
-      }
-    }
+    mutate(text, 0, alphabet, rng);
     if(text.empty())
       continue;
     const std::string path = folder + "/mutant." + seed.first;

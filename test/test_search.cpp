@@ -1023,6 +1023,25 @@ TEST_CASE("meshes: any FaceListGraph, Polyhedron_3 as Surface_mesh", "[mesh]")
   }
 }
 
+// Whether two kd-trees over the same points give every `step`-th point the same k nearest, indices and
+// squared distances.
+static bool same_nearest(const SN::internal::Point_kd_tree& a, const SN::internal::Point_kd_tree& b, std::size_t n,
+                         std::size_t k, std::uint32_t step)
+{
+  std::vector<SN::internal::Neighbor> from_a, from_b;
+  bool same = true;
+  for(std::uint32_t i = 0; i < n; i += step)
+  {
+    a.nearest(i, k, from_a);
+    b.nearest(i, k, from_b);
+    same = same && from_a.size() == (std::min)(k, n - 1) &&
+           std::equal(from_a.begin(), from_a.end(), from_b.begin(), from_b.end(), [](const auto& x, const auto& y) {
+             return x.index == y.index && x.squared_distance == y.squared_distance;
+           });
+  }
+  return same;
+}
+
 // The kd-tree against brute force where its shortcuts could go wrong: a flat slab of random points
 // (the airborne case), a grid (ties at every distance, some on the pruning bound), exact duplicates
 // (distance 0), few neighbors (kept sorted) and many (selected in bulk, each query starting from its
@@ -1088,21 +1107,12 @@ TEST_CASE("the kd-tree's k nearest and balls equal brute force", "[neighbors]")
 
   // the tree built on several threads (the top levels split level by level, then subtrees) is the one
   // built on one: the same positions in its leaves, the same neighbors
+  const SN::internal::Point_kd_tree on_one_thread(copy);
   for(unsigned int threads : {2u, 3u, 0u})
   {
     const SN::internal::Point_kd_tree tree(copy, threads);
     CHECK(tree.leaf_order() == query.spatial_order());
-    std::vector<SN::internal::Neighbor> from_tree;
-    bool same = true;
-    for(std::uint32_t i = 0; i < copy.size(); i += 5)
-    {
-      query.query(i, 33, found);
-      tree.nearest(i, 33, from_tree);
-      same = same && found.size() == from_tree.size() &&
-             std::equal(found.begin(), found.end(), from_tree.begin(),
-                        [](const auto& a, const auto& b) { return a.index == b.index && a.squared_distance == b.squared_distance; });
-    }
-    CHECK(same);
+    CHECK(same_nearest(on_one_thread, tree, copy.size(), 33, 5));
   }
 }
 
@@ -1208,19 +1218,14 @@ TEST_CASE("the kd-tree on points that middle cuts would split off one at a time"
   {
     const SN::internal::Point_kd_tree on_threads(copy, threads);
     CHECK(on_threads.leaf_order() == tree.leaf_order());
-    std::vector<SN::internal::Neighbor> from_threads;
-    bool same = true;
+    CHECK(same_nearest(tree, on_threads, copy.size(), 25, 11));
+    bool whole = true;
     for(std::uint32_t i = 0; i < copy.size(); i += 11)
     {
-      tree.nearest(i, 25, found);
-      on_threads.nearest(i, 25, from_threads);
-      same = same && found.size() == 25 && from_threads.size() == 25 &&
-             std::equal(found.begin(), found.end(), from_threads.begin(),
-                        [](const auto& a, const auto& b) { return a.index == b.index; });
-      on_threads.ball(i, std::ldexp(1., 820), from_threads);
-      same = same && from_threads.size() == copy.size() - 1;
+      on_threads.ball(i, std::ldexp(1., 820), found);
+      whole = whole && found.size() == copy.size() - 1;
     }
-    CHECK(same);
+    CHECK(whole);
   }
 
   // coordinates at the ends of the doubles: the middle of a cell is taken without overflow (its

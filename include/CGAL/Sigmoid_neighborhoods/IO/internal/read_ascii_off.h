@@ -85,17 +85,14 @@ inline bool read_ascii_off_soup(const Input_file& file, Polygon_soup& soup, unsi
   std::vector<std::exception_ptr> exceptions;
 
   // The item lines of each block, then the index of each block's first one.
-  std::vector<std::size_t> first_item(block_count + 1, 0);
-  parse_blocks(block_count, thread_number, exceptions, [&](std::size_t b) {
+  const std::vector<std::size_t> first_item = first_item_of_blocks(block_count, thread_number, [&](std::size_t b) {
     std::size_t items = 0;
     for_each_off_item_line(data + starts[b], data + starts[b + 1], [&](const char*, const char*, bool) {
       ++items;
       return true;
     });
-    first_item[b + 1] = items;
+    return items;
   });
-  for(std::size_t b = 0; b < block_count; ++b)
-    first_item[b + 1] += first_item[b];
   // Fewer lines than the header announces: read_off_soup() says so. The room taken below is
   // bounded by the lines there are.
   if(first_item[block_count] < vertices || first_item[block_count] - vertices < faces)

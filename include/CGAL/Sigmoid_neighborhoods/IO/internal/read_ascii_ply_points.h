@@ -103,17 +103,14 @@ inline bool read_ascii_ply_points(const Input_file& file, std::vector<Oriented_p
   const std::size_t block_count = starts.size() - 1, n = layout.count;
   std::vector<std::exception_ptr> exceptions;
 
-  std::vector<std::size_t> first_record(block_count + 1, 0);
-  parse_blocks(block_count, thread_number, exceptions, [&](std::size_t b) {
+  const std::vector<std::size_t> first_record = first_item_of_blocks(block_count, thread_number, [&](std::size_t b) {
     std::size_t lines = 0;
     for_each_line_with_tokens(data + starts[b], data + starts[b + 1], [&](const char*, const char*, bool) {
       ++lines;
       return true;
     });
-    first_record[b + 1] = lines;
+    return lines;
   });
-  for(std::size_t b = 0; b < block_count; ++b)
-    first_record[b + 1] += first_record[b];
   if(first_record[block_count] < n)
     return false; // cut short: CGAL's reader says so
 

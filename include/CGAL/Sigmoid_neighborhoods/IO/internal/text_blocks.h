@@ -136,6 +136,19 @@ void parse_blocks(std::size_t blocks, std::size_t thread_number, std::vector<std
     guarded(i);
 }
 
+// The index of each block's first item, and the total at the end: `count(b)` items in block b,
+// counted on the threads (a count must not throw).
+template <typename Count>
+std::vector<std::size_t> first_item_of_blocks(std::size_t blocks, std::size_t thread_number, const Count& count)
+{
+  std::vector<std::size_t> first(blocks + 1, 0);
+  std::vector<std::exception_ptr> exceptions;
+  parse_blocks(blocks, thread_number, exceptions, [&](std::size_t b) { first[b + 1] = count(b); });
+  for(std::size_t b = 0; b < blocks; ++b)
+    first[b + 1] += first[b];
+  return first;
+}
+
 // The spaces of std::isspace in the C locale, those `>>` skips between the tokens of a line.
 inline bool is_text_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }
 
