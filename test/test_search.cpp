@@ -1212,8 +1212,7 @@ TEST_CASE("the kd-tree on points that middle cuts would split off one at a time"
     tree.ball(i, std::ldexp(1., 820), found);
     REQUIRE(found.size() == copy.size() - 1);
   }
-  // built on threads (its subtrees overflow the room a tree of large leaves would take): the same
-  // tree, the same neighbors
+  // built on threads: the same tree, the same neighbors
   for(unsigned int threads : {2u, 3u, 0u})
   {
     const SN::internal::Point_kd_tree on_threads(copy, threads);
@@ -1227,6 +1226,36 @@ TEST_CASE("the kd-tree on points that middle cuts would split off one at a time"
     }
     CHECK(whole);
   }
+
+  // One chain of 300 points: on 2 and 3 threads, the subtree below the top levels holds leaves of one
+  // point, more nodes than the room its slice has (leaves of 8 points on average), and the tree is put
+  // together from copies; the same tree and the nearest points of brute force.
+  std::vector<SN::internal::Double_point> chain;
+  for(int e = 0; e < 300; ++e)
+    chain.emplace_back(std::ldexp(1., e), double(e % 3), 0.);
+  const SN::internal::Point_kd_tree chain_tree(chain);
+  for(unsigned int threads : {2u, 3u})
+  {
+    const SN::internal::Point_kd_tree on_threads(chain, threads);
+    CHECK(on_threads.leaf_order() == chain_tree.leaf_order());
+    CHECK(same_nearest(chain_tree, on_threads, chain.size(), 25, 1));
+  }
+  bool chain_nearest = true;
+  for(std::uint32_t i = 0; i < chain.size(); ++i)
+  {
+    chain_tree.nearest(i, 5, found);
+    std::vector<std::pair<double, std::uint32_t>> expected;
+    for(std::uint32_t j = 0; j < chain.size(); ++j)
+      if(j != i)
+      {
+        const double dx = chain[j].x() - chain[i].x(), dy = chain[j].y() - chain[i].y();
+        expected.emplace_back(dx * dx + dy * dy, j);
+      }
+    std::sort(expected.begin(), expected.end());
+    for(std::size_t t = 0; t < 5; ++t)
+      chain_nearest = chain_nearest && found.size() == 5 && found[t].index == expected[t].second;
+  }
+  CHECK(chain_nearest);
 
   // coordinates at the ends of the doubles: the middle of a cell is taken without overflow (its
   // distances overflow to infinity, ties decided by index)
