@@ -17,6 +17,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -364,6 +365,40 @@ TEST_CASE("the polynomial cosine of the approximations is within 6e-16 of std::c
     CHECK(std::abs(batch[i] - std::cos(t[i])) <= 6e-16);
   CHECK(batch[0] == 1.);
   CHECK(batch[7] == -1.);
+}
+
+TEST_CASE("the arguments of many angles at once are transition_argument's, bit for bit", "[sigmoid]")
+{
+  typedef SN::Cosine_sigmoid S;
+  const double pi = CGAL_PI, nan = std::numeric_limits<double>::quiet_NaN();
+  // the grid's values and their neighbors, the tolerance's, 0, pi and NaN; 37 angles (no whole batch)
+  std::vector<double> x = {0., std::nextafter(0., 1.), 1e-7, 1e-6, std::nextafter(1e-6, 1.), pi, nan};
+  for(int i = 1; i < 6; ++i)
+    for(double v : {i * pi / 6, std::nextafter(i * pi / 6, 0.), std::nextafter(i * pi / 6, 4.)})
+      x.push_back(v);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> angle(0., pi);
+  while(x.size() < 37)
+    x.push_back(angle(random));
+  std::size_t band = 0, ones = 0, zeros = 0;
+  for(double tolerance : {0., 1e-6, pi / 6})
+    for(int i = 0; i <= 6; ++i)
+      for(int j = i; j <= 6; ++j)
+      {
+        const S sigmoid(i == 6 ? pi : i * pi / 6, j == 6 ? pi : j * pi / 6, tolerance);
+        std::vector<double> t(x.size(), 5.);
+        sigmoid.transition_arguments(x.data(), x.size(), t.data());
+        for(std::size_t e = 0; e < x.size(); ++e)
+        {
+          const double expected = sigmoid.transition_argument(x[e]);
+          CHECK(std::memcmp(&t[e], &expected, sizeof(double)) == 0);
+          expected == S::WEIGHT_ONE ? ++ones : expected == S::WEIGHT_ZERO ? ++zeros : ++band;
+        }
+      }
+  // every case taken, steps (a = b) among them
+  CHECK(band > 0);
+  CHECK(ones > 0);
+  CHECK(zeros > 0);
 }
 
 TEST_CASE("sigmoid cases and cosine arguments", "[sigmoid]")

@@ -6,10 +6,12 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_COSINE_SIGMOID_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_COSINE_SIGMOID_H
 
+#include <CGAL/Sigmoid_neighborhoods/config.h>
 #include <CGAL/number_type_config.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -106,6 +108,27 @@ public:
     if(x > m_b)
       return WEIGHT_ZERO;
     return CGAL_PI * (x - m_a) / (m_b - m_a);
+  }
+
+  // transition_argument() of x[0, n) into t, bit for bit, without branches: a loop the compiler
+  // vectorizes (angles fall on either side of a and b at random, so branches mispredict). The
+  // argument is computed in every lane and kept in the band only; a step (a = b) divides by 1, never
+  // by 0, and a NaN angle gets WEIGHT_ZERO from a step and NaN otherwise, as above.
+  CGAL_SIGMOID_NEIGHBORHOODS_VECTORIZED_SELECTS void transition_arguments(const double* x, std::size_t n,
+                                                                           double* t) const
+  {
+    const double a = m_a, b = m_b, tolerance = m_tolerance;
+    const bool step = a == b;
+    const double width = step ? 1. : b - a;
+    for(std::size_t j = 0; j < n; ++j)
+    {
+      const double v = x[j];
+      const bool one = (v <= tolerance) | (v < a) | (step & (v <= a));
+      const bool zero = (v > b) | (step & !one);
+      double argument = CGAL_PI * (v - a) / width;
+      argument = zero ? WEIGHT_ZERO : argument;
+      t[j] = one ? WEIGHT_ONE : argument;
+    }
   }
 
   static double weight_of_argument(double t)

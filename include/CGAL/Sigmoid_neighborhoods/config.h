@@ -30,6 +30,14 @@
 #else
 #  define CGAL_SIGMOID_NEIGHBORHOODS_ALWAYS_INLINE inline
 #endif
+// for a loop of comparisons and selects that GCC vectorizes only when comparisons may not trap
+// (under the default -ftrapping-math a signalling comparison is "control flow"); the values are the
+// same, only floating-point exception flags may differ, and nothing reads them
+#if defined(__GNUC__) && !defined(__clang__)
+#  define CGAL_SIGMOID_NEIGHBORHOODS_VECTORIZED_SELECTS __attribute__((optimize("no-trapping-math")))
+#else
+#  define CGAL_SIGMOID_NEIGHBORHOODS_VECTORIZED_SELECTS
+#endif
 /// \endcond
 
 #endif // CGAL_SIGMOID_NEIGHBORHOODS_CONFIG_H

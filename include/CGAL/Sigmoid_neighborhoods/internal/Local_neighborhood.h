@@ -104,8 +104,7 @@ public:
       std::fill(t, t + m_angles.size(), Cosine_sigmoid::WEIGHT_ONE);
       return true;
     }
-    for(std::size_t j = 0; j < m_angles.size(); ++j)
-      t[j] = sigmoid.transition_argument(m_angles[j]);
+    sigmoid.transition_arguments(m_angles.data(), m_angles.size(), t);
     return false;
   }
 
