@@ -220,6 +220,9 @@ TEST_CASE("all-ones weights are recognised exactly where the sigmoid gives 1 eve
       angles.push_back(SN::normal_angle(input.normals[i], input.normals[n.index]));
       largest = (std::max)(largest, angles.back());
     }
+    // the angles taken from the cosines kept: normal_angle()'s bits
+    REQUIRE(local.angles().size() == angles.size());
+    CHECK(std::memcmp(local.angles().data(), angles.data(), angles.size() * sizeof(double)) == 0);
     // a just below, at and above the largest angle, and the tolerance on both sides of it
     for(double a : {0., largest * (1. - 1e-12), largest, std::nextafter(largest, 4.), pi / 6, pi})
       for(double tolerance : {0., largest, 1e-6})
@@ -228,7 +231,10 @@ TEST_CASE("all-ones weights are recognised exactly where the sigmoid gives 1 eve
           continue;
         const SN::Cosine_sigmoid sigmoid(a, (std::max)(a, pi / 2), tolerance);
         std::vector<double> w(angles.size());
-        const bool ones = local.weights(sigmoid, w.data());
+        local.weights(sigmoid, w.data());
+        // the optimal search's form: cosine arguments, then weights
+        std::vector<double> t(angles.size());
+        const bool ones = local.transition_arguments(sigmoid, t.data());
         bool every_one = true;
         for(std::size_t j = 0; j < angles.size(); ++j)
         {
@@ -239,9 +245,6 @@ TEST_CASE("all-ones weights are recognised exactly where the sigmoid gives 1 eve
         if(ones)
           CHECK(every_one);
         ones ? ++all_ones : ++evaluated;
-        // the optimal search's form: cosine arguments, then weights
-        std::vector<double> t(angles.size());
-        CHECK(local.transition_arguments(sigmoid, t.data()) == ones);
         for(std::size_t j = 0; j < angles.size(); ++j)
         {
           const double v = SN::Cosine_sigmoid::weight_of_argument(t[j]);

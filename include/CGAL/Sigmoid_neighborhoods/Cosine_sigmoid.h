@@ -159,6 +159,20 @@ private:
   double m_cos_one, m_cos_zero;
 };
 
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+// The cosine whose arc cosine is normal_angle(n, m), or normal_line_angle(n, m) with `line`: the
+// dot product clamped as they clamp it, so that a caller may take the arc cosine only where it
+// needs the angle (Cosine_sigmoid::weight_from_cosine()) and still get the same bits.
+template <typename Vector>
+double normal_cosine(const Vector& n, const Vector& m, bool line)
+{
+  const double c = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
+  return line ? (std::min)(std::abs(c), 1.) : std::clamp(c, -1., 1.);
+}
+} // namespace internal
+/// \endcond
+
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
   the angle in `[0, pi]` between two unit vectors given as coordinate triples:
@@ -172,8 +186,7 @@ private:
 template <typename Vector>
 double normal_angle(const Vector& n, const Vector& m)
 {
-  const double c = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
-  return std::acos(std::clamp(c, -1., 1.));
+  return std::acos(internal::normal_cosine(n, m, false));
 }
 
 /*!
@@ -185,8 +198,7 @@ double normal_angle(const Vector& n, const Vector& m)
 template <typename Vector>
 double normal_line_angle(const Vector& n, const Vector& m)
 {
-  const double c = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
-  return std::acos((std::min)(std::abs(c), 1.));
+  return std::acos(internal::normal_cosine(n, m, true));
 }
 
 } // namespace Sigmoid_neighborhoods

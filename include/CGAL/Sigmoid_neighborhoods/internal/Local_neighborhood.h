@@ -33,7 +33,9 @@ namespace Sigmoid_neighborhoods {
 namespace internal {
 
 // The neighborhood N_i(k_max) of one point: offsets p_j - p_i, normal angles, and the running
-// largest squared radius, from which every (a, b, k) with k <= k_max is evaluated.
+// largest squared radius, from which every (a, b, k) with k <= k_max is evaluated. The angles are
+// kept as cosines and their arc cosines taken when first asked for: the weights of one sigmoid need
+// them in its transition band only (Cosine_sigmoid::weight_from_cosine()).
 class Local_neighborhood
 {
 public:
@@ -43,12 +45,15 @@ public:
   {
     const std::size_t m = neighbors.size() + 1;
     m_offsets.resize(m);
-    m_angles.resize(m);
+    m_cosines.resize(m);
     m_squared_radius.resize(m);
     m_offsets[0].setZero();
-    m_angles[0] = 0.;
+    m_cosines[0] = 1.; // acos(1) = 0: a point's own angle
     m_squared_radius[0] = 0.;
+    m_angles.clear(); // taken when asked for (angles()), but for a caller without angles
     m_largest_angle = 0.;
+    if(!with_angles)
+      m_angles.assign(m, 0.);
     const Double_point& p = input.points[i];
     const Eigen::Vector3d& n = input.normals[i];
     for(std::size_t j = 1; j < m; ++j)
@@ -56,10 +61,7 @@ public:
       const std::uint32_t index = neighbors[j - 1].index;
       const Double_point& q = input.points[index];
       m_offsets[j] = Eigen::Vector3d(q.x() - p.x(), q.y() - p.y(), q.z() - p.z());
-      m_angles[j] = !with_angles       ? 0.
-                    : input.line_angles ? normal_line_angle(n, input.normals[index])
-                                        : normal_angle(n, input.normals[index]);
-      m_largest_angle = (std::max)(m_largest_angle, m_angles[j]);
+      m_cosines[j] = with_angles ? normal_cosine(n, input.normals[index], input.line_angles) : 1.;
       m_squared_radius[j] = (std::max)(m_squared_radius[j - 1], m_offsets[j].squaredNorm());
     }
     // Scaled by a power of 2 (exactly) to a largest radius in [1, 2): covariances at that scale
@@ -84,28 +86,43 @@ public:
   double unit_squared_radius(unsigned int k) const { return m_unit_squared_radius[k]; }
   double unit_scale() const { return m_unit_scale; } // unit offset / offset, a power of 2
 
-  // w_ij for all j in N_i(k_max); w_ii = sig(0) = 1. Returns true when all weights are 1 because
-  // every angle is below a (or within the tolerance): on smooth surfaces, most pairs of the grid.
-  bool weights(const Cosine_sigmoid& sigmoid, double* w) const
+  // w_ij = sigmoid(angle j) for all j in N_i(k_max), bit for bit; w_ii = sig(0) = 1.
+  void weights(const Cosine_sigmoid& sigmoid, double* w) const
   {
-    const bool all_ones = transition_arguments(sigmoid, w);
-    for(std::size_t j = 0; j < m_angles.size(); ++j)
-      w[j] = Cosine_sigmoid::weight_of_argument(w[j]); // in place: sigmoid(angle j)
-    return all_ones;
+    for(std::size_t j = 0; j < m_cosines.size(); ++j)
+      w[j] = sigmoid.weight_from_cosine(m_cosines[j]);
   }
 
-  // Cosine_sigmoid::transition_argument() for all j in N_i(k_max): weights() short of the cosine;
-  // returns true when all weights are 1, as weights() does.
+  // Cosine_sigmoid::transition_argument() for all j in N_i(k_max), from which weights() follow;
+  // returns true when all weights are 1 because every angle is below a (or within the tolerance):
+  // on smooth surfaces, most pairs of the grid.
   bool transition_arguments(const Cosine_sigmoid& sigmoid, double* t) const
   {
+    const std::vector<double>& x = angles();
     if(m_largest_angle <= sigmoid.angle_tolerance() || m_largest_angle < sigmoid.a())
     {
       // what transition_argument(x) gives for every x <= m_largest_angle
-      std::fill(t, t + m_angles.size(), Cosine_sigmoid::WEIGHT_ONE);
+      std::fill(t, t + x.size(), Cosine_sigmoid::WEIGHT_ONE);
       return true;
     }
-    sigmoid.transition_arguments(m_angles.data(), m_angles.size(), t);
+    sigmoid.transition_arguments(x.data(), x.size(), t);
     return false;
+  }
+
+  // the normal angles of N_i(k_max), normal_angle() (or normal_line_angle()) bit for bit
+  const std::vector<double>& angles() const
+  {
+    if(m_angles.size() != m_cosines.size())
+    {
+      m_angles.resize(m_cosines.size());
+      m_largest_angle = 0.;
+      for(std::size_t j = 0; j < m_cosines.size(); ++j)
+      {
+        m_angles[j] = std::acos(m_cosines[j]);
+        m_largest_angle = (std::max)(m_largest_angle, m_angles[j]);
+      }
+    }
+    return m_angles;
   }
 
   Weighted_covariance covariance(const double* w, unsigned int k, Barycenter barycenter) const
@@ -149,12 +166,13 @@ public:
 
 private:
   std::vector<Eigen::Vector3d> m_offsets;
-  std::vector<double> m_angles;
+  std::vector<double> m_cosines; // normal_cosine() of each neighbor
+  mutable std::vector<double> m_angles; // their arc cosines, once angles() is called; empty before
   std::vector<double> m_squared_radius;
   std::vector<Eigen::Vector3d> m_unit_offsets;
   std::vector<double> m_unit_squared_radius;
   double m_unit_scale = 1.;
-  double m_largest_angle = 0.;
+  mutable double m_largest_angle = 0.; // of m_angles
 };
 
 // How for_each_neighborhood() visits the points of an input whose order has no locality
