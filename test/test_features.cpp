@@ -395,7 +395,7 @@ TEST_CASE("the arguments of many angles at once are transition_argument's, bit f
           expected == S::WEIGHT_ONE ? ++ones : expected == S::WEIGHT_ZERO ? ++zeros : ++band;
         }
       }
-  // every case taken, steps (a = b) among them
+  // every case taken (the grid's steps a = b among the pairs)
   CHECK(band > 0);
   CHECK(ones > 0);
   CHECK(zeros > 0);

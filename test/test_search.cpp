@@ -254,6 +254,27 @@ TEST_CASE("all-ones weights are recognised exactly where the sigmoid gives 1 eve
   }
   CHECK(all_ones > 0);
   CHECK(evaluated > 0);
+
+  // with line angles (normals with any sign): normal_line_angle()'s bits, and its weights
+  const SN::internal::Oriented_points lines =
+    SN::internal::copy_oriented_points(points, Point_map(), Normal_map(), true);
+  const SN::Cosine_sigmoid band(0., pi / 3);
+  for(std::uint32_t i = 0; i < lines.size(); i += 5)
+  {
+    query.query(i, 20, neighbors);
+    local.assign(lines, i, neighbors);
+    std::vector<double> angles(1, 0.), w(neighbors.size() + 1);
+    for(const auto& n : neighbors)
+      angles.push_back(SN::normal_line_angle(lines.normals[i], lines.normals[n.index]));
+    REQUIRE(local.angles().size() == angles.size());
+    CHECK(std::memcmp(local.angles().data(), angles.data(), angles.size() * sizeof(double)) == 0);
+    local.weights(band, w.data());
+    for(std::size_t j = 0; j < angles.size(); ++j)
+    {
+      const double expected = band(angles[j]);
+      CHECK(std::memcmp(&w[j], &expected, sizeof(double)) == 0);
+    }
+  }
 }
 
 TEST_CASE("optimal search equals the plain loop over all 420 triples", "[optimal]")
@@ -1065,8 +1086,9 @@ TEST_CASE("the kd-tree's k nearest and balls equal brute force", "[neighbors]")
 
   std::vector<std::uint32_t> expected_indices, indices;
   std::vector<std::size_t> expected_offsets, offsets;
-  brute_force_rows(points, 100, expected_indices, expected_offsets);
-  for(unsigned int k : {1u, 7u, 32u, 33u, 100u})
+  brute_force_rows(points, 200, expected_indices, expected_offsets);
+  // both sides of the tree's SORTED_INSERTION_K (128)
+  for(unsigned int k : {1u, 7u, 32u, 33u, 100u, 128u, 129u, 200u})
     for(unsigned int threads : {1u, 2u})
     {
       CAPTURE(k, threads);

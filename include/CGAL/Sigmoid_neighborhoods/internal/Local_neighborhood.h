@@ -50,10 +50,10 @@ public:
     m_offsets[0].setZero();
     m_cosines[0] = 1.; // acos(1) = 0: a point's own angle
     m_squared_radius[0] = 0.;
-    m_angles.clear(); // taken when asked for (angles()), but for a caller without angles
+    m_angles.clear(); // angles() takes them from the cosines when first asked
     m_largest_angle = 0.;
     if(!with_angles)
-      m_angles.assign(m, 0.);
+      m_angles.assign(m, 0.); // every angle 0, without an arc cosine
     const Double_point& p = input.points[i];
     const Eigen::Vector3d& n = input.normals[i];
     for(std::size_t j = 1; j < m; ++j)
