@@ -347,8 +347,8 @@ private:
       double* w = &s.weights[p * weight_stride()];
       if(!s.has_weights[p])
       {
-        // Local_neighborhood::weights(), bit for bit: the same arguments through the same function
-        // (weights() itself would recompute the arguments)
+        // the sigmoid's weights, bit for bit: Cosine_sigmoid::operator() is weight_of_argument() of
+        // these arguments (Local_neighborhood::weights() gives the same from the cosines)
         const double* t = &s.arguments[p * weight_stride()];
         for(std::size_t j = 0; j <= m_settings.k_max; ++j)
           w[j] = Cosine_sigmoid::weight_of_argument(t[j]);
