@@ -7,9 +7,9 @@
 
 #include "evaluation_json.h"
 
-#include <catch2/catch.hpp>
+#include "test_scratch.h"
 
-#include <unistd.h>
+#include <catch2/catch.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -38,9 +38,7 @@ std::uint64_t bits(double x)
 
 fs::path scratch_file(const std::string& name, const std::string& content)
 {
-  const fs::path dir = fs::temp_directory_path() / ("sn_evaluation_files_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const fs::path p = dir / name;
+  const fs::path p = fs::path(scratch_folder("evaluation_files")) / name;
   std::ofstream(p, std::ios::binary) << content;
   return p;
 }

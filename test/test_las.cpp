@@ -17,8 +17,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -641,9 +639,7 @@ namespace {
 // `zero` (all when `all_zero`), written to a scratch file.
 std::string sphere_file(const std::string& name, int n, const std::set<int>& zero, bool all_zero = false)
 {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("sn_zero_normals_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const std::string file = (dir / name).string();
+  const std::string file = scratch_folder("zero_normals") + "/" + name;
   std::ofstream out(file);
   out.precision(17);
   for(int i = 0; i < n; ++i)

@@ -7,6 +7,7 @@
 // classifier model file that stores the pyramid's scales.
 
 #include "test_models.h"
+#include "test_scratch.h"
 
 #include <CGAL/Sigmoid_neighborhoods/compute_point_features.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_pyramid_features.h>
@@ -476,7 +477,7 @@ TEST_CASE("feature options: the command line and a model file refused by the sam
         "model.bin: not a usable classifier model: features.fixed_k is -3, expected a count (an integer >= 0)");
 
   // a settings line nested deeper than the tool's files is refused before the parser sees it
-  const std::string path = (std::filesystem::temp_directory_path() / "sn_deep_model.bin").string();
+  const std::string path = scratch_folder("pyramid") + "/deep_model.bin";
   {
     std::ofstream out(path, std::ios::binary);
     out << CLASSIFIER_MODEL_MAGIC << '\n' << std::string(5000, '[') << std::string(5000, ']') << "\nforest";
