@@ -7,7 +7,8 @@
 # copied from a build with their shared libraries (see --bundle), then on that machine
 #   - `optimal` on the lone-star scan on 1, 4 and all threads, with its phases, and its sequential
 #     fraction (benchmark/phase_fractions.py when python3 is there);
-#   - the optimal search alone, (c) of optimal_search_benchmark, on 1 and all threads;
+#   - the optimal search alone, (c) and (e) of optimal_search_benchmark, on 1 and all threads, beside
+#     pgeof's algorithm (g) and nanoflann's k-NN (h) where the benchmark was built with them;
 #   - `classify predict` of the two eastern IGN tiles with a model of the default set and one of
 #     CGAL's generator (trained beforehand: classify train on the four western tiles);
 #   - a synthetic survey of N points (generate_survey) tile by tile on every core
@@ -51,10 +52,10 @@ if command -v python3 > /dev/null; then
     -o "$work/scan.csv"
 fi
 
-echo "## the search alone, (c)"
+echo "## the search alone, (c) and (e), beside pgeof's algorithm (g) and nanoflann's k-NN (h)"
 for threads in 1 "$cores"; do
   "$dir/bin/optimal_search_benchmark" --data scan --scan "$dir/data/lone-star_tls.ply" --skip-plain --threads "$threads" \
-    2>&1 | grep -E "^  \((a|c|e)\)|summary" || true
+    2>&1 | grep -E "^  \((a|c|e|g|h)\)|k-NN|summary" || true
 done
 
 echo "## classify predict, the two eastern tiles"
