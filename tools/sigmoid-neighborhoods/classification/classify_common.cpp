@@ -252,31 +252,41 @@ void train(const std::vector<Featured_file>& files, Trained& t)
   train_forest(rows, t);
 }
 
-std::size_t train_file_by_file(const std::vector<std::string>& paths, Trained& t, Phase_times& times)
+Featured_file read_labels(const std::string& path, const Classifier_settings& settings)
 {
-  // the labels first: they size the rows and choose the training points. Read without normals (the
-  // same points: duplicates merge on their positions), unless the file's own normals refuse that (a
-  // few zero normals need estimating): then as the features read it.
+  // Read without normals (the same points: duplicates merge on their positions), unless the file's
+  // own normals refuse that (a few zero normals need estimating): then as the features read it.
   SN::Normal_options without_normals;
   without_normals.neighbors = 0;
-  without_normals.threads = t.settings.normals.threads;
+  without_normals.threads = settings.normals.threads;
+  progress(path + ": reading the labels");
+  Featured_file f;
+  f.path = path;
+  try
+  {
+    f.model = SN::read_oriented_point_set(path, without_normals);
+  }
+  catch(const SN::Input_error&)
+  {
+    f.model = read_input(path, [&] { return read_model(path, 0, settings.normals); });
+  }
+  add_features(f, settings.labels, true, settings.features, false);
+  return f;
+}
+
+void check_same_points(const Featured_file& f, std::size_t labeled_points)
+{
+  if(f.truth.size() != labeled_points)
+    throw Usage_error(f.path + ": the file changed while it was read (" + std::to_string(labeled_points) +
+                      " points, then " + std::to_string(f.truth.size()) + ")");
+}
+
+std::size_t train_file_by_file(const std::vector<std::string>& paths, Trained& t, Phase_times& times)
+{
+  // the labels first: they size the rows and choose the training points
   std::vector<std::vector<int>> truth;
   for(const std::string& path : paths)
-  {
-    progress(path + ": reading the labels");
-    Featured_file f;
-    f.path = path;
-    try
-    {
-      f.model = SN::read_oriented_point_set(path, without_normals);
-    }
-    catch(const SN::Input_error&)
-    {
-      f.model = read_input(path, [&] { return read_model(path, 0, t.settings.normals); });
-    }
-    add_features(f, t.settings.labels, true, t.settings.features, false);
-    truth.push_back(std::move(f.truth));
-  }
+    truth.push_back(read_labels(path, t.settings).truth);
   times.end("labels");
   const std::size_t used = choose_training_points(truth, t.settings);
   Training_rows rows;
@@ -288,9 +298,7 @@ std::size_t train_file_by_file(const std::vector<std::string>& paths, Trained& t
     const Featured_file f = read_and_feature(paths[p], t.settings.labels, true, t.settings.normals, t.settings.features);
     times.end_reading(f.model);
     times.move("reading", "features", f.seconds_features);
-    if(f.truth.size() != truth[p].size())
-      throw Usage_error(paths[p] + ": the file changed while it was read (" + std::to_string(truth[p].size()) +
-                        " points, then " + std::to_string(f.truth.size()) + ")");
+    check_same_points(f, truth[p].size());
     if(p == 0)
     {
       names = column_names(f.columns);

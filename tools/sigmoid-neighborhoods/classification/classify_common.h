@@ -80,6 +80,13 @@ Featured_file read_and_feature(const std::string& path, const Label_mapping& lab
                                const SN::Normal_options& normals, const Feature_options& features,
                                bool compute_features = true);
 
+// The points of `path` with their labels and truth alone: no normals estimated, no features (the
+// same points as read_and_feature() reads).
+Featured_file read_labels(const std::string& path, const Classifier_settings& settings);
+
+// Throws where `f`, read again, has other than the `labeled_points` that read_labels() found.
+void check_same_points(const Featured_file& f, std::size_t labeled_points);
+
 // The classes of one file under a trained forest, and each class's probability per point.
 struct Prediction
 {
