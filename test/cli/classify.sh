@@ -59,6 +59,23 @@ expect_refusal "--choose-scales chooses --cgal-voxel and --pyramid-cell" "$tool"
 expect_refusal "--choose-scales: no group of --features has scales in metres" "$tool" classify train "$b9" \
   -o "$dir/none.bin" --labels $labels --features k20 --choose-scales
 
+# The choice over several files with a group without scales in metres (computed once per file, at the
+# points the folds' forests read): the same model on 1 and 2 threads but for the choice's seconds, and
+# the chosen scale is the ladder's best worse-of-two score, ties to the coarser
+for threads in 1 2; do
+  "$tool" classify train "$b9" "$b9" -o "$dir/chosen_two$threads.bin" --labels $labels \
+    --features cgal-metric,multiscale-sigmoid --scales 10,25 --trees 2 --threads $threads 2> "$dir/chosen_two.txt" ||
+    fail "train two files, scales chosen: $(cat "$dir/chosen_two.txt")"
+  sed 's/"seconds":[0-9.eE+-]*//' "$dir/chosen_two$threads.bin" > "$dir/chosen_two$threads.cmp"
+done
+cmp -s "$dir/chosen_two1.cmp" "$dir/chosen_two2.cmp" || fail "the choice differs on 1 and 2 threads"
+sed -n 2p "$dir/chosen_two1.bin" | tr -d ' ' | grep -o '"\(ladder\|same_density\|thinned\)":\[[^]]*\|"chosen":[0-9.]*' |
+  tr -d '"[' | awk -F: '{ n = split($2, v, ","); for(i = 1; i <= n; ++i) x[$1, i] = v[i]; size = n }
+    END { best = -1; for(i = 1; i <= size; ++i) { s = x["same_density", i] + 0; t = x["thinned", i] + 0;
+            w = s < t ? s : t; if(w < 0 || w > 1) exit 1; if(w >= best) { best = w; pick = x["ladder", i] + 0 } }
+          if(size != 5 || pick != x["chosen", 1] + 0) exit 1 }' ||
+  fail "the chosen scale is not the ladder's best: $(sed -n 2p "$dir/chosen_two1.bin" | grep -o '"scale_choice":{[^}]*}')"
+
 # --sigmoid: the weights of multiscale-sigmoid, stored in the model (20deg and 50deg in radians);
 # more than two angles or one out of [0, pi] is refused
 "$tool" classify train "$b9" -o "$dir/sigmoid.bin" --labels $labels --features multiscale-sigmoid --trees 2 \
