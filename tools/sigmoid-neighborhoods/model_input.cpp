@@ -5,6 +5,10 @@
 
 #include "model_input.h"
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 namespace sigmoid_tool {
 
 SN::Normal_source read_normal_source(const std::string& text)
@@ -62,6 +66,13 @@ SN::Oriented_point_set read_model(const std::string& path, unsigned int k_max,
     normals.neighbors = 0;
   normals.kept_neighbors = k_max;
   SN::Oriented_point_set model = SN::read_oriented_point_set(path, normals);
+#ifdef __GLIBC__
+  // The reader's and the normals' neighbor search (CGAL's kd-tree: many small nodes), freed, stay in
+  // glibc's heap between blocks still held; the search's columns that follow do not reuse them, so
+  // without this they add to its peak (+23 MB, +14 %, on a scan of 519,000 points on one thread).
+  if(normals.neighbors > 0)
+    malloc_trim(0);
+#endif
   if(model.points.size() < std::size_t(k_max) + 1)
     throw Too_small_for_the_grid("needs at least k_max + 1 = " + std::to_string(k_max + 1) +
                                    " distinct points, got " + std::to_string(model.points.size()) +

@@ -33,9 +33,9 @@ namespace Sigmoid_neighborhoods {
   `neighbor_indices` and `neighbor_offsets`, so that several calls on one point set share them.
 
   Row `i` is `indices[offsets[i]]` ... `indices[offsets[i + 1] - 1]`: the `min(k, n - 1)` nearest
-  points other than `i`, ordered by distance and then by index (the order of the package's own
-  kd-tree, so that an algorithm given these rows computes what it computes without them, bit for
-  bit). The result is the same for any number of threads.
+  points other than `i`, ordered by distance and then by index (SPEC §2's tie rule applied to
+  `CGAL::Orthogonal_k_neighbor_search`, so that an algorithm given these rows computes what it
+  computes without them, bit for bit). The result is the same for any number of threads.
 
   \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag`
   \tparam PointRange a model of `ConstRange` whose value type is the key type of `point_map`
@@ -45,7 +45,7 @@ namespace Sigmoid_neighborhoods {
   \param k the number of neighbors of each point
   \param indices receives the neighbor indices (pgeof's `nn`), replacing its content
   \param offsets receives the `n + 1` row offsets (pgeof's `nn_ptr`), replacing its content
-  \param np optional: `point_map` (CGAL) and `number_of_threads`
+  \param np optional: `point_map` (CGAL), `number_of_threads` and `search_tree`
 
   \pre `k >= 1`; finite coordinates; fewer than `2^32` points; otherwise `std::invalid_argument`
 */
@@ -62,7 +62,7 @@ void compute_k_nearest_neighbors(const PointRange& points, unsigned int k, std::
     internal::checked_points(points, NP_helper::get_const_point_map(points, np), threads);
   if(copy.size() > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
     throw std::invalid_argument("compute_k_nearest_neighbors(): more than 2^32 - 1 points");
-  const internal::Neighbor_query query(copy, threads);
+  const internal::Neighbor_query query = internal::tree_query<ConcurrencyTag>(copy, np);
   internal::Neighbor_lists rows =
     internal::nearest_neighbor_rows(query, k, threads);
   indices = std::move(rows.indices);

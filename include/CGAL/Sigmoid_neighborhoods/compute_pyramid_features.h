@@ -60,7 +60,7 @@ struct Pyramid_level
   \param points the input points
   \param cell_sizes the cell sizes of the levels, each positive and finite, in any order
   \param k the number of neighbors of a representative on its level
-  \param np optional: `point_map` (CGAL's) and `number_of_threads`
+  \param np optional: `point_map` (CGAL's), `number_of_threads` and `neighbor_search`
 
   \pre `k >= 1`; at least `k + 1` representatives on every level; the preconditions of
        `thin_on_voxel_grid()` (otherwise `std::invalid_argument`)
@@ -108,7 +108,9 @@ build_point_pyramid(const PointRange& points, const std::vector<double>& cell_si
       range[i] = i;
     compute_k_nearest_neighbors<ConcurrencyTag>(
       range, k, level.neighbor_indices, level.neighbor_offsets,
-      parameters::number_of_threads(threads, CGAL::parameters::point_map(CGAL::make_property_map(positions))));
+      parameters::neighbor_search(internal::neighbor_search(np),
+                                  parameters::number_of_threads(
+                                    threads, CGAL::parameters::point_map(CGAL::make_property_map(positions)))));
     levels.push_back(std::move(level));
   }
   return levels;

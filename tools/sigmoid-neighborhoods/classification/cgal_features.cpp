@@ -201,7 +201,7 @@ void append_anchored_cgal_features(const SN::Oriented_point_set& model, unsigned
   std::vector<std::pair<std::string, std::vector<float>>> features;
   SNC::compute_anchored_cgal_features<SN::Parallel_if_available_tag>(
     model.points, float(voxel), scales, grid_only ? SNC::Anchored_cgal_features::GRIDS_ONLY : SNC::Anchored_cgal_features::ALL,
-    std::back_inserter(features), SN::parameters::number_of_threads(threads));
+    std::back_inserter(features), SN::parameters::neighbor_search(CLASSIFICATION_NEIGHBOR_SEARCH, SN::parameters::number_of_threads(threads)));
   // the columns in double, one per thread at a time (each allocated and filled by its thread)
   const std::size_t first = columns.size();
   for(const auto& f : features)
@@ -225,7 +225,7 @@ double anchored_cgal_halo_width(const SN::Oriented_point_set& model, unsigned in
   if(grid_only || first == last)
     return width;
   const std::vector<double> reach = SN::Classification::anchored_cgal_neighbor_reach<SN::Parallel_if_available_tag>(
-    model.points, float(voxel), scales, first, last, SN::parameters::number_of_threads(threads));
+    model.points, float(voxel), scales, first, last, SN::parameters::neighbor_search(CLASSIFICATION_NEIGHBOR_SEARCH, SN::parameters::number_of_threads(threads)));
   for(std::size_t i = first; i < last; ++i)
     width = std::max(width, halo_needed(model.points[i].x(), model.points[i].y(), extent, reach[i - first]));
   return width;

@@ -69,6 +69,7 @@ SN::Normal_options classify_normal_options(const Arguments& args)
     o.orientation = SN::Normal_orientation::UPWARD;
   if(o.source == SN::Normal_source::AUTO || o.source == SN::Normal_source::FROM_FILE)
     o.source = SN::Normal_source::PCA; // the same normals for every file, whatever it holds
+  o.neighbor_search = CLASSIFICATION_NEIGHBOR_SEARCH;
   return o;
 }
 

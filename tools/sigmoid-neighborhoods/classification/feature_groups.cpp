@@ -119,7 +119,7 @@ std::vector<SN::Pyramid_level> build_model_pyramid(const SN::Oriented_point_set&
 {
   return SN::build_point_pyramid<SN::Parallel_if_available_tag>(
     point_indices(model.points.size()), o.pyramid_cell_sizes(), o.pyramid_k,
-    SN::parameters::number_of_threads(o.threads, model_maps(model)));
+    SNP::neighbor_search(CLASSIFICATION_NEIGHBOR_SEARCH, SNP::number_of_threads(o.threads, model_maps(model))));
 }
 
 // How wide a tile's halo must be for the pyramid's records of the tile's points `first` ... `last - 1`
@@ -280,7 +280,7 @@ void compute_pyramid(Feature_group_input& in, bool sigmoid, std::vector<Feature_
     {
       records = SN::compute_pyramid_level_features<SN::Parallel_if_available_tag>(
         point_indices(model.points.size()), levels, o.pyramid_k, weights,
-        SNP::number_of_threads(o.threads, model_maps(model)));
+        SNP::neighbor_search(CLASSIFICATION_NEIGHBOR_SEARCH, SNP::number_of_threads(o.threads, model_maps(model))));
     }
     catch(...)
     {
@@ -442,7 +442,7 @@ std::vector<Feature_column> compute_feature_columns(const SN::Oriented_point_set
                             std::to_string(model.points.size()));
     progress("neighbors");
     SN::compute_k_nearest_neighbors<SN::Parallel_if_available_tag>(
-      point_indices(model.points.size()), k_needed, indices, offsets, SNP::number_of_threads(o.threads, model_maps(model)));
+      point_indices(model.points.size()), k_needed, indices, offsets, SNP::neighbor_search(CLASSIFICATION_NEIGHBOR_SEARCH, SNP::number_of_threads(o.threads, model_maps(model))));
   }
   Feature_group_input in{model, o, model_rows ? model.neighbor_indices : indices,
                          model_rows ? model.neighbor_offsets : offsets, {}};

@@ -11,6 +11,7 @@
 
 #include "../command_line.h"
 
+#include <CGAL/Sigmoid_neighborhoods/parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
 
 #include <CGAL/Bbox_2.h>
@@ -30,6 +31,11 @@ struct Oriented_point_set;
 namespace sigmoid_tool {
 
 namespace SN = CGAL::Sigmoid_neighborhoods;
+
+// Every neighbor search of the classification (the normals' rows, the groups' rows, the pyramids,
+// cgal-metric's eigen analyses): the package's own kd-tree, 1.4 times faster than CGAL's in a whole
+// prediction of an IGN tile, for the same rows (benchmark/README.md, "The neighbor search").
+constexpr SN::Neighbor_search CLASSIFICATION_NEIGHBOR_SEARCH = SN::Neighbor_search::PACKAGE_KD_TREE;
 
 struct Feature_column
 {

@@ -66,7 +66,7 @@ enum class Anchored_cgal_features
   \param scales the number of scales, `>= 1`
   \param which all features, or the grids' alone
   \param out receives the features
-  \param np optional: `point_map` (CGAL) and `number_of_threads`
+  \param np optional: `point_map` (CGAL), `number_of_threads` and `neighbor_search`
   \pre finite coordinates; fewer than `2^32` points; otherwise `std::invalid_argument`
 */
 template <typename ConcurrencyTag, typename PointRange, typename OutputIterator,
@@ -103,7 +103,8 @@ OutputIterator compute_anchored_cgal_features(const PointRange& points, float vo
       // the first scale on every point, the others on their voxels' representatives; 12 neighbors
       const std::vector<std::uint32_t> candidates =
         s == 0 ? std::vector<std::uint32_t>() : internal::voxel_representatives<ConcurrencyTag>(copy, voxels[s], threads);
-      eigen.push_back(internal::neighbor_eigen_analysis<ConcurrencyTag>(copy, candidates, 12, threads));
+      eigen.push_back(internal::neighbor_eigen_analysis<ConcurrencyTag>(copy, candidates, 12, threads, nullptr,
+                                                                        internal::neighbor_search(np)));
     }
   auto per_point = [&](const auto& value) {
     std::vector<float> values(n);
@@ -183,7 +184,7 @@ inline double anchored_cgal_grid_reach(float voxel_size, unsigned int scales)
   \param scales the number of voxel scales, as given to `compute_anchored_cgal_features()`
   \param first the first point whose reach is wanted
   \param last one past the last point whose reach is wanted
-  \param np optional: `point_map` (CGAL) and `number_of_threads`
+  \param np optional: `point_map` (CGAL), `number_of_threads` and `neighbor_search`
   \returns `last - first` distances, in the points' units
 */
 template <typename ConcurrencyTag, typename PointRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
@@ -212,10 +213,10 @@ std::vector<double> anchored_cgal_neighbor_reach(const PointRange& points, float
         candidates.push_back(copy[r]);
       diagonal = std::sqrt(2.) * double(voxel);
     }
-    const internal::Point_kd_tree tree(candidates, threads);
+    const internal::Neighbor_query tree(candidates, threads, internal::neighbor_search(np));
     internal::for_each_index<ConcurrencyTag>(last - first, threads, [] { return std::vector<internal::Neighbor>(); },
                                              [&](std::size_t q, std::vector<internal::Neighbor>& nearest) {
-      tree.nearest(copy[first + q], k, nearest);
+      tree.query_position(copy[first + q], unsigned(k), nearest);
       const double d = nearest.size() < k ? (std::numeric_limits<double>::infinity)()
                                           : std::sqrt(nearest.back().squared_distance) + diagonal;
       reach[q] = (std::max)(reach[q], d);

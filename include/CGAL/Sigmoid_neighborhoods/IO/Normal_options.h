@@ -6,6 +6,8 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_IO_NORMAL_OPTIONS_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_IO_NORMAL_OPTIONS_H
 
+#include <CGAL/Sigmoid_neighborhoods/parameters.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Origin.h>
 
@@ -114,7 +116,8 @@ struct Normal_options
   unsigned int kept_neighbors = 0;
   /// the threads of the readers (LAZ chunks, PLY point sets, XYZ, OFF, OBJ), of a mesh's check and
   /// normals, and of the estimation (0: the OpenMP or TBB default)
-  unsigned int threads = 0;
+  unsigned int threads = 0;  /// the search structure of the estimation's neighbor rows (the same rows with either)
+  Neighbor_search neighbor_search = Neighbor_search::CGAL_KD_TREE;
 };
 
 } // namespace Sigmoid_neighborhoods

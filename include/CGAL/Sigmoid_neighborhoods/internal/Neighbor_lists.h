@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -159,8 +160,25 @@ std::optional<Neighbor_lists> given_neighborhoods(const NamedParameters& np, std
     return std::nullopt;
 }
 
-// The neighborhoods of `np` (neighbor_indices and neighbor_offsets), else the kd-tree, built on the
-// threads of a call of `ConcurrencyTag`.
+// The caller's search tree of `np` (search_tree), else the structure of neighbor_search(np) built on
+// the threads of a call of `ConcurrencyTag`.
+template <typename ConcurrencyTag, typename NamedParameters>
+Neighbor_query tree_query(const std::vector<Double_point>& points, const NamedParameters& np)
+{
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::search_tree_t>::value)
+  {
+    const auto& tree = CGAL::parameters::get_parameter(np, internal_np::search_tree).get();
+    typedef std::decay_t<decltype(tree)> Tree;
+    return Neighbor_query(points, std::make_unique<const Kd_tree_spatial_search<Tree>>(tree, points.size()));
+  }
+  else
+    return Neighbor_query(points,
+                          kernel_threads<ConcurrencyTag>(CGAL::parameters::choose_parameter(
+                            CGAL::parameters::get_parameter(np, internal_np::number_of_threads), 0u)),
+                          neighbor_search(np));
+}
+
+// The neighborhoods of `np` (neighbor_indices and neighbor_offsets), else tree_query().
 template <typename ConcurrencyTag, typename NamedParameters>
 Neighbor_query neighbor_query(const std::vector<Double_point>& points, const NamedParameters& np)
 {
@@ -169,6 +187,8 @@ Neighbor_query neighbor_query(const std::vector<Double_point>& points, const Nam
   constexpr bool has_indices = !is_default_parameter<NamedParameters, internal_np::neighbor_indices_t>::value;
   constexpr bool has_offsets = !is_default_parameter<NamedParameters, internal_np::neighbor_offsets_t>::value;
   static_assert(has_indices == has_offsets, "neighbor_indices and neighbor_offsets are given together");
+  static_assert(!has_indices || is_default_parameter<NamedParameters, internal_np::search_tree_t>::value,
+                "search_tree and neighbor_indices exclude each other: given rows need no search");
   if constexpr(has_indices)
   {
     // CGAL's packs hold copies, except of parameters given with std::cref(): those are read in place
@@ -198,8 +218,7 @@ Neighbor_query neighbor_query(const std::vector<Double_point>& points, const Nam
     }
   }
   else
-    return Neighbor_query(points, kernel_threads<ConcurrencyTag>(CGAL::parameters::choose_parameter(
-                                    CGAL::parameters::get_parameter(np, internal_np::number_of_threads), 0u)));
+    return tree_query<ConcurrencyTag>(points, np);
 }
 
 // The k nearest other points of every point of `query` in rows of min(k, n - 1), ordered by

@@ -34,7 +34,8 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Neighbor_lists nearest_neighbor_rows(co
   const std::vector<std::uint32_t>& order = query.spatial_order();
   // The points in the tree's order: consecutive queries read the same leaves, and each starts from
   // the bound its predecessor gives (triangle inequality: the predecessor's k-th neighbor distance
-  // plus their distance, with a relative margin far above the roundings, 1e-15 at most).
+  // plus their distance, with a relative margin far above the roundings, 1e-15 at most): a hint the
+  // package's tree takes, and CGAL's search goes without.
   struct Scratch
   {
     std::vector<Neighbor> found;

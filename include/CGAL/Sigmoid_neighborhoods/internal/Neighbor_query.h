@@ -8,11 +8,14 @@
 
 #include <CGAL/Sigmoid_neighborhoods/config.h>
 
+#include <CGAL/Sigmoid_neighborhoods/parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Kd_tree_search.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Point_kd_tree.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -20,14 +23,22 @@ namespace CGAL {
 namespace Sigmoid_neighborhoods {
 namespace internal {
 
-// The one neighbor structure of a point set: the package's kd-tree over the point indices, built once and
-// queried by every step for k nearest neighbors and for balls, both ordered by is_nearer(); or the
-// neighborhoods the caller computed, in compressed rows, whose first k entries are N_i(k).
+// The one neighbor structure of a point set, built once and queried by every step for k nearest
+// neighbors and for balls, both ordered by is_nearer() (SPEC §2's tie rule applied to CGAL's
+// searches): CGAL's kd-tree over the point indices, the caller's CGAL search tree over the same
+// points, or the package's own kd-tree (Neighbor_search::PACKAGE_KD_TREE), all with the same results;
+// or the neighborhoods the caller computed, in compressed rows, whose first k entries are N_i(k).
 class Neighbor_query
 {
 public:
   // `points` must outlive the query. The tree is built on `threads` threads (kernel_threads()).
-  explicit Neighbor_query(const std::vector<Double_point>& points, unsigned int threads = 1);
+  explicit Neighbor_query(const std::vector<Double_point>& points, unsigned int threads = 1,
+                          Neighbor_search structure = Neighbor_search::CGAL_KD_TREE);
+
+  // The caller's search structure over the same points (Kd_tree_spatial_search), which must outlive the query.
+  Neighbor_query(const std::vector<Double_point>& points, std::unique_ptr<const Spatial_search> search)
+    : m_points(points), m_search(std::move(search)), m_leaf_order(m_search->leaf_order())
+  {}
 
   // The caller's rows (checked by check_neighbor_rows()) instead of the tree: no tree is built.
   Neighbor_query(const std::vector<Double_point>& points, std::vector<std::size_t> offsets,
@@ -67,16 +78,19 @@ public:
   }
 
   // The `k` nearest points of point `i` other than `i` itself (|result| = min(k, n - 1)),
-  // ordered by is_nearer(). `squared_bound`: see Point_kd_tree::nearest(). Thread-safe.
+  // ordered by is_nearer(). `squared_bound`: a hint for the package's tree, see
+  // Point_kd_tree::nearest(). Thread-safe.
   void query(std::uint32_t i, unsigned int k, std::vector<Neighbor>& result,
              double squared_bound = (std::numeric_limits<double>::infinity)()) const;
+
+  // The `k` nearest points to the position `q` (|result| = min(k, n)), ordered by is_nearer(); not
+  // with given rows. Thread-safe.
+  void query_position(const Double_point& q, unsigned int k, std::vector<Neighbor>& result) const;
 
   // The squared distance between points `i` and `j`, as query() computes it.
   double squared_distance(std::uint32_t i, std::uint32_t j) const
   {
-    const Double_point &p = m_points[i], &q = m_points[j];
-    const double dx = q.x() - p.x(), dy = q.y() - p.y(), dz = q.z() - p.z();
-    return dx * dx + dy * dy + dz * dz;
+    return squared_distance_between(m_points[j], m_points[i]);
   }
 
   // The points j != i with |p_j - p_i|^2 <= radius^2, ordered by is_nearer(). Thread-safe.
@@ -84,7 +98,10 @@ public:
 
   // The point indices in an order where consecutive points are near, for queries on every point:
   // the tree's leaf order, or 0, 1, ... with given rows (empty).
-  const std::vector<std::uint32_t>& spatial_order() const { return m_tree.leaf_order(); }
+  const std::vector<std::uint32_t>& spatial_order() const
+  {
+    return m_package_tree ? m_package_tree->leaf_order() : m_leaf_order;
+  }
 
   // Whether the points come in an order without locality (shuffled, or sorted along one axis
   // only), where a query per point in index order misses the cache at every neighbor: the median
@@ -99,7 +116,9 @@ public:
 
 private:
   const std::vector<Double_point>& m_points;
-  Point_kd_tree m_tree;
+  std::unique_ptr<const Spatial_search> m_search;
+  std::unique_ptr<const Point_kd_tree> m_package_tree; // instead of m_search
+  std::vector<std::uint32_t> m_leaf_order;
   // given rows: owned (converted from the caller's types) or the caller's own
   std::vector<std::size_t> m_own_offsets;
   std::vector<std::uint32_t> m_own_indices;
@@ -107,6 +126,14 @@ private:
   const std::uint32_t* m_indices = nullptr;
   bool m_given = false;
 };
+
+// The search structure of `np` (neighbor_search), CGAL's kd-tree by default.
+template <typename NamedParameters>
+Neighbor_search neighbor_search(const NamedParameters& np)
+{
+  return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::neighbor_search),
+                                            Neighbor_search::CGAL_KD_TREE);
+}
 
 } // namespace internal
 } // namespace Sigmoid_neighborhoods

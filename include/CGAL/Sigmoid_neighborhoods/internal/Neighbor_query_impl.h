@@ -19,16 +19,29 @@ namespace Sigmoid_neighborhoods {
 namespace internal {
 
 CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION Neighbor_query::Neighbor_query(const std::vector<Double_point>& points,
-                                                                   unsigned int threads)
-  : m_points(points), m_tree(points, threads)
-{}
+                                                                   unsigned int threads, Neighbor_search structure)
+  : m_points(points)
+{
+  if(structure == Neighbor_search::PACKAGE_KD_TREE)
+    m_package_tree = std::make_unique<const Point_kd_tree>(points, threads);
+  else
+  {
+    m_search = std::make_unique<const Index_kd_tree_search>(points, threads);
+    m_leaf_order = m_search->leaf_order();
+  }
+}
 
 CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Neighbor_query::query(std::uint32_t i, unsigned int k, std::vector<Neighbor>& result,
                                                                 double squared_bound) const
 {
+  if(m_package_tree)
+  {
+    m_package_tree->nearest(i, k, result, squared_bound);
+    return;
+  }
   if(!m_given)
   {
-    m_tree.nearest(i, k, result, squared_bound);
+    nearest_by_tie_rule(*m_search, m_points, m_points[i], i, k, result);
     return;
   }
   // the first k entries of the row, in the caller's order
@@ -46,7 +59,7 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Neighbor_query::query(std::uint32_
 
 CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION bool Neighbor_query::has_scattered_order() const
 {
-  const std::vector<std::uint32_t>& leaves = m_tree.leaf_order();
+  const std::vector<std::uint32_t>& leaves = spatial_order();
   const std::size_t n = m_points.size();
   if(m_given || n < 2 || leaves.size() != n)
     return false;
@@ -71,7 +84,35 @@ CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION bool Neighbor_query::has_scattered_orde
 CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Neighbor_query::query_ball(std::uint32_t i, double radius, std::vector<Neighbor>& result) const
 {
   CGAL_precondition(!m_given);
-  m_tree.ball(i, radius * radius, result);
+  if(m_package_tree)
+  {
+    m_package_tree->ball(i, radius * radius, result);
+    return;
+  }
+  const Double_point& p = m_points[i];
+  m_search->ball(p, radius, result);
+  for(std::size_t e = 0; e < result.size();)
+  {
+    if(result[e].index == i)
+    {
+      result[e] = result.back();
+      result.pop_back();
+      continue;
+    }
+    result[e].squared_distance = squared_distance_between(m_points[result[e].index], p);
+    ++e;
+  }
+  sort_by_nearness(result);
+}
+
+CGAL_SIGMOID_NEIGHBORHOODS_CORE_FUNCTION void Neighbor_query::query_position(const Double_point& q, unsigned int k,
+                                                                        std::vector<Neighbor>& result) const
+{
+  CGAL_precondition(!m_given);
+  if(m_package_tree)
+    m_package_tree->nearest(q, k, result);
+  else
+    nearest_by_tie_rule(*m_search, m_points, q, NO_POINT, k, result);
 }
 
 } // namespace internal

@@ -7,7 +7,7 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_ORIGIN_GRID_H
 
 #include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/Point_kd_tree.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
 #include <CGAL/Classification/compressed_float.h>

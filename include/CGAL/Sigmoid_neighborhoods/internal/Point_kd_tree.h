@@ -8,7 +8,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/config.h>
 
-#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -18,53 +18,6 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 namespace internal {
-
-typedef CGAL::Simple_cartesian<double> Double_kernel;
-typedef Double_kernel::Point_3 Double_point;
-
-struct Neighbor
-{
-  std::uint32_t index;
-  double squared_distance;
-};
-
-// The order of neighborhoods (SPEC §2): by squared distance, ties by index, so that they do not
-// depend on the tree's traversal.
-inline bool is_nearer(const Neighbor& x, const Neighbor& y)
-{
-  return x.squared_distance < y.squared_distance || (x.squared_distance == y.squared_distance && x.index < y.index);
-}
-
-// Sorts by is_nearer(). Up to 64 neighbors (a k-NN result or a ball, unordered) are placed by
-// rank, each neighbor's rank the number of neighbors nearer than it: comparisons without branches,
-// where std::sort's mispredicted ones took a quarter of the query's time on a scan. Indices are
-// distinct, so the ranks are a permutation.
-inline void sort_by_nearness(std::vector<Neighbor>& neighbors)
-{
-  constexpr std::size_t RANKED = 64;
-  const std::size_t m = neighbors.size();
-  if(m > RANKED)
-  {
-    std::sort(neighbors.begin(), neighbors.end(), [](const Neighbor& x, const Neighbor& y) { return is_nearer(x, y); });
-    return;
-  }
-  double distance[RANKED];
-  std::uint32_t index[RANKED];
-  Neighbor sorted[RANKED];
-  for(std::size_t e = 0; e < m; ++e)
-  {
-    distance[e] = neighbors[e].squared_distance;
-    index[e] = neighbors[e].index;
-  }
-  for(std::size_t e = 0; e < m; ++e)
-  {
-    std::size_t rank = 0;
-    for(std::size_t f = 0; f < m; ++f)
-      rank += std::size_t((distance[f] < distance[e]) | ((distance[f] == distance[e]) & (index[f] < index[e])));
-    sorted[rank] = neighbors[e];
-  }
-  std::copy(sorted, sorted + m, neighbors.begin());
-}
 
 // A kd-tree over point indices for the package's exact queries: the k nearest other points and the
 // balls of a point of the set, ordered by is_nearer(). Each node is split at the middle of its cell

@@ -30,8 +30,6 @@ namespace Sigmoid_neighborhoods {
 
 namespace internal {
 
-constexpr std::uint32_t NO_POINT = (std::numeric_limits<std::uint32_t>::max)();
-
 struct Mesh_points
 {
   Oriented_points input;

@@ -6,7 +6,7 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_VOXEL_EIGEN_ANALYSIS_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_VOXEL_EIGEN_ANALYSIS_H
 
-#include <CGAL/Sigmoid_neighborhoods/internal/Point_kd_tree.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/sort_on_threads.h>
 
@@ -141,7 +141,8 @@ struct Eigen_records
 template <typename ConcurrencyTag>
 Eigen_records neighbor_eigen_analysis(const std::vector<Double_point>& points,
                                       const std::vector<std::uint32_t>& candidates, std::size_t k,
-                                      unsigned int threads, std::vector<double>* reach = nullptr)
+                                      unsigned int threads, std::vector<double>* reach = nullptr,
+                                      Neighbor_search structure = Neighbor_search::CGAL_KD_TREE)
 {
   const bool all = candidates.empty();
   std::vector<Double_point> candidate_points;
@@ -149,7 +150,7 @@ Eigen_records neighbor_eigen_analysis(const std::vector<Double_point>& points,
     for(std::uint32_t c : candidates)
       candidate_points.push_back(points[c]);
   const std::vector<Double_point>& tree_points = all ? points : candidate_points;
-  const Point_kd_tree tree(tree_points, threads);
+  const Neighbor_query tree(tree_points, threads, structure);
   Eigen_records records(points.size());
   if(reach != nullptr)
     reach->assign(points.size(), 0.);
@@ -160,7 +161,7 @@ Eigen_records neighbor_eigen_analysis(const std::vector<Double_point>& points,
   };
   for_each_index<ConcurrencyTag>(points.size(), threads, [] { return Scratch(); },
                                  [&](std::size_t i, Scratch& scratch) {
-    tree.nearest(points[i], k, scratch.nearest);
+    tree.query_position(points[i], unsigned(k), scratch.nearest);
     scratch.neighbors.clear();
     for(const Neighbor& m : scratch.nearest)
       scratch.neighbors.push_back(tree_points[m.index]);

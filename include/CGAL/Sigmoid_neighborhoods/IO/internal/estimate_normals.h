@@ -66,8 +66,10 @@ inline void estimate_normals(Oriented_point_set& out, const Normal_options& o)
   std::vector<std::uint32_t> indices(n);
   std::iota(indices.begin(), indices.end(), std::uint32_t(0));
   out.normals.assign(n, CGAL::NULL_VECTOR);
-  const auto maps = parameters::number_of_threads(
-    o.threads, CGAL::parameters::point_map(CGAL::make_property_map(out.points)).normal_map(CGAL::make_property_map(out.normals)));
+  const auto maps = parameters::neighbor_search(
+    o.neighbor_search,
+    parameters::number_of_threads(o.threads, CGAL::parameters::point_map(CGAL::make_property_map(out.points))
+                                               .normal_map(CGAL::make_property_map(out.normals))));
   auto clock = std::chrono::steady_clock::now();
   try
   {
