@@ -7,6 +7,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/Point_set_3.h>
+#include <CGAL/Sigmoid_neighborhoods/search_tree.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Kd_tree.h>

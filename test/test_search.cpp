@@ -1133,10 +1133,11 @@ TEST_CASE("the kd-tree's k nearest and balls equal brute force", "[neighbors]")
   // the tree built on several threads (the top levels split level by level, then subtrees) is the one
   // built on one: the same positions in its leaves, the same neighbors
   const SN::internal::Point_kd_tree on_one_thread(copy);
+  const SN::internal::Neighbor_query package_query(copy, 1, SN::Neighbor_search::PACKAGE_KD_TREE);
   for(unsigned int threads : {2u, 3u, 0u})
   {
     const SN::internal::Point_kd_tree tree(copy, threads);
-    CHECK(tree.leaf_order() == query.spatial_order());
+    CHECK(tree.leaf_order() == package_query.spatial_order());
     CHECK(same_nearest(on_one_thread, tree, copy.size(), 33, 5));
   }
 }

@@ -39,7 +39,7 @@ namespace {
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 
 // A folded sheet on a grid of 1/64 steps, with a duplicated point and ties at every grid distance:
-// coordinates exactly representable in float, so that every kernel holds the same values.
+// coordinates and normals exactly representable in float, so that every kernel holds the same values.
 struct Sample
 {
   double x, y, z, nx, ny, nz;
@@ -52,9 +52,9 @@ std::vector<Sample> folded_grid()
     for(int j = 0; j < 24; ++j)
     {
       const double x = i / 64., y = j / 64.;
-      const double z = x < 0.2 ? 0. : (x - 0.2);
-      const double s = std::sqrt(0.5);
-      result.push_back(x < 0.2 ? Sample{x, y, z, 0., 0., 1.} : Sample{x, y, z, -s, 0., s});
+      const double z = x < 0.25 ? 0. : (x - 0.25);
+      // normals of length sqrt(2) on the slope, exact in float too (the package makes them unit)
+      result.push_back(x < 0.25 ? Sample{x, y, z, 0., 0., 1.} : Sample{x, y, z, -1., 0., 1.});
     }
   result.push_back(result[37]); // a duplicate: a tie at distance 0
   return result;

@@ -20,6 +20,7 @@
 #include <CGAL/Sigmoid_neighborhoods/Neighborhood_criterion.h>
 #include <CGAL/Sigmoid_neighborhoods/Optimal_sigmoid_neighborhood.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_k_nearest_neighbors.h>
+#include <CGAL/Sigmoid_neighborhoods/search_tree.h>
 #include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/orient_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/Point_set_3.h>

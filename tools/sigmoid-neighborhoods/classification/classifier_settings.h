@@ -159,6 +159,7 @@ inline Classifier_settings settings_from_json(const nlohmann::json& j, const std
     const Json_object n = model.object("normals");
     s.normals.source = n.choice("source", {"jet", "pca"}) == "jet" ? SN::Normal_source::JET : SN::Normal_source::PCA;
     s.normals.neighbors = unsigned_value(n, "neighbors");
+    s.normals.neighbor_search = CLASSIFICATION_NEIGHBOR_SEARCH;
     if(s.normals.neighbors < 5 || s.normals.neighbors > 10000)
       n.fail("normals.neighbors", "is " + std::to_string(s.normals.neighbors) + ", expected 5 to 10000");
     const std::string orientation = n.string("orientation", 64);

@@ -8,7 +8,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/config.h>
 
-#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Spatial_search.h>
 
 #include <CGAL/Fuzzy_sphere.h>
 #include <CGAL/Kd_tree.h>
@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -46,26 +47,12 @@ struct Point_by_index_map
 
 // The search structure a call builds when the caller gives none: CGAL's kd-tree over the point
 // indices, through Search_traits_adapter on the package's copy (as Point_set_processing_3 builds
-// its own), with sliding-midpoint splits. Without the points cache: on a scan of 519,000 points it
-// held 25 MB against 13 MB and was as fast for 10 and 20 neighbors (10 % faster for 100).
+// its own), with sliding-midpoint splits. No points cache: with it the tree held 25 MB instead of
+// 13 MB on a scan of 519,000 points, for the same speed at 10 and 20 neighbors (10 % less at 100).
 typedef CGAL::Search_traits_3<Double_kernel> Double_search_traits;
 typedef CGAL::Search_traits_adapter<std::uint32_t, Point_by_index_map, Double_search_traits> Index_search_traits;
 typedef CGAL::Sliding_midpoint<Index_search_traits> Index_splitter;
 typedef CGAL::Kd_tree<Index_search_traits, Index_splitter, CGAL::Tag_true, CGAL::Tag_false> Index_kd_tree;
-
-// What Neighbor_query asks of a search structure; it applies the tie rule to the results.
-class Spatial_search
-{
-public:
-  virtual ~Spatial_search() = default;
-  // the min(count, n) nearest points to `q` by increasing squared distance (one choice among points
-  // tied at the last distance, ties in any order)
-  virtual void nearest(const Double_point& q, std::size_t count, std::vector<Neighbor>& found) const = 0;
-  // the points at distance at most `radius` from `q`, in any order, their distances not set
-  virtual void ball(const Double_point& q, double radius, std::vector<Neighbor>& found) const = 0;
-  // the point indices in the order of the tree's leaves
-  virtual std::vector<std::uint32_t> leaf_order() const = 0;
-};
 
 template <typename Traits>
 struct Adapter_parts
@@ -85,7 +72,7 @@ struct Adapter_parts<CGAL::Search_traits_adapter<Key, PointMap, BaseTraits>>
 // CGAL's Orthogonal_k_neighbor_search and Fuzzy_sphere on a CGAL::Kd_tree whose items are the point
 // indices 0..n-1 of the input (any key type that converts to std::size_t: std::size_t, std::uint32_t,
 // Point_set_3::Index) through Search_traits_adapter on a point map, the base traits those of a
-// kernel of double coordinates. The tree is not owned unless `owned` is given.
+// kernel of double coordinates. The tree is held by reference: it must outlive the search.
 template <typename Tree>
 class Kd_tree_spatial_search final : public Spatial_search
 {
@@ -233,49 +220,11 @@ private:
   Kd_tree_spatial_search<Index_kd_tree> m_search;
 };
 
-// SPEC §2's tie rule on a search that breaks ties arbitrarily: the min(k, n - 1) nearest points to
-// point `self` other than itself (self == NO_POINT: the min(k, n) nearest to `q`), ordered by
-// is_nearer(). It asks for EXTRA_NEIGHBORS more than it needs and asks again, twice as many, only
-// when the last one asked ties with the k-th: then points at that distance may be missing.
-constexpr std::size_t EXTRA_NEIGHBORS = 1;
-
-inline void nearest_by_tie_rule(const Spatial_search& search, const std::vector<Double_point>& points,
-                                const Double_point& q, std::uint32_t self, std::size_t k,
-                                std::vector<Neighbor>& result)
+// declared in Spatial_search.h: the caller's tree of the named parameter search_tree
+template <typename Tree>
+std::unique_ptr<const Spatial_search> caller_tree_search(const Tree& tree, std::size_t n)
 {
-  const std::size_t n = points.size();
-  k = (std::min)(k, self == NO_POINT ? n : n - 1);
-  result.clear();
-  if(k == 0)
-    return;
-  std::size_t asked = (std::min)(n, k + (self == NO_POINT ? 0 : 1) + EXTRA_NEIGHBORS);
-  for(;;)
-  {
-    search.nearest(q, asked, result);
-    if(self != NO_POINT)
-    {
-      const auto found_self = std::find_if(result.begin(), result.end(), [self](const Neighbor& x) { return x.index == self; });
-      if(found_self != result.end())
-        result.erase(found_self);
-    }
-    // ties by index: an insertion sort, linear on results sorted by distance
-    for(std::size_t e = 1; e < result.size(); ++e)
-    {
-      const Neighbor x = result[e];
-      std::size_t f = e;
-      for(; f > 0 && is_nearer(x, result[f - 1]); --f)
-        result[f] = result[f - 1];
-      result[f] = x;
-    }
-    // every point was found, or none left out can be nearer than the last one found, which is
-    // farther than the k-th
-    if(asked == n || (result.size() > k && result[k].squared_distance > result[k - 1].squared_distance))
-    {
-      result.resize(k);
-      return;
-    }
-    asked = (std::min)(n, 2 * asked);
-  }
+  return std::make_unique<const Kd_tree_spatial_search<Tree>>(tree, n);
 }
 
 } // namespace internal

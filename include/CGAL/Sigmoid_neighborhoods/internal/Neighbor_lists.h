@@ -167,9 +167,9 @@ Neighbor_query tree_query(const std::vector<Double_point>& points, const NamedPa
 {
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::search_tree_t>::value)
   {
-    const auto& tree = CGAL::parameters::get_parameter(np, internal_np::search_tree).get();
-    typedef std::decay_t<decltype(tree)> Tree;
-    return Neighbor_query(points, std::make_unique<const Kd_tree_spatial_search<Tree>>(tree, points.size()));
+    return Neighbor_query(points,
+                          caller_tree_search(CGAL::parameters::get_parameter(np, internal_np::search_tree).get(),
+                                             points.size()));
   }
   else
     return Neighbor_query(points,

@@ -9,7 +9,7 @@
 #include <CGAL/Sigmoid_neighborhoods/config.h>
 
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/Kd_tree_search.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Spatial_search.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Point_kd_tree.h>
 
 #include <algorithm>
@@ -35,7 +35,7 @@ public:
   explicit Neighbor_query(const std::vector<Double_point>& points, unsigned int threads = 1,
                           Neighbor_search structure = Neighbor_search::CGAL_KD_TREE);
 
-  // The caller's search structure over the same points (Kd_tree_spatial_search), which must outlive the query.
+  // The caller's search structure over the same points (caller_tree_search()), which must outlive the query.
   Neighbor_query(const std::vector<Double_point>& points, std::unique_ptr<const Spatial_search> search)
     : m_points(points), m_search(std::move(search)), m_leaf_order(m_search->leaf_order())
   {}

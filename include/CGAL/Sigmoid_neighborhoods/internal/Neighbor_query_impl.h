@@ -10,6 +10,7 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_NEIGHBOR_QUERY_IMPL_H
 
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Kd_tree_search.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Point_kd_tree_impl.h>
 
 #include <CGAL/assertions.h>
