@@ -101,7 +101,7 @@ CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(number_of_threads_t, number_of_th
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(line_angles_t, line_angles)
 // estimate_normals()
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(normal_estimation_method_t, normal_estimation_method)
-// every function that searches neighbors: CGAL's kd-tree or the package's (Neighbor_search)
+// the functions on point ranges that search neighbors: CGAL's kd-tree or the package's (Neighbor_search)
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(neighbor_search_t, neighbor_search)
 // caller-computed neighborhoods in compressed rows (pgeof's `nn` / `nn_ptr`)
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(neighbor_indices_t, neighbor_indices)
