@@ -4,7 +4,7 @@
 # Quick start on a fresh Debian/Ubuntu machine:
 #   make evaluate   # installs dependencies, builds, runs the main job, writes results/
 #   make test       # installs dependencies, builds, builds the manual, runs every test
-#   make doc        # the manual only: $(BUILD_DIR)/doc/html/index.html
+#   make doc        # the manuals only: $(BUILD_DIR)/doc/html/index.html, $(BUILD_DIR)/doc/lidar_io/html/
 #   make denoising  # the denoiser against CGAL's smoothing: $(RESULTS_DIR)/denoising/
 #   make classification  # feature sets for semantic classification of lidar: $(RESULTS_DIR)/classification/
 #   make python     # the Python module, installed into $(PYTHON_VENV) (a venv that sees Debian's numpy)
@@ -75,7 +75,15 @@ doc: deps
 	  echo "make doc: doxygen failed or warned (exit code $$status, $$(grep -c . $(DOC_DIR)/warnings.log) lines above)" >&2; \
 	  exit 1; \
 	fi
-	@echo "Manual: $(DOC_DIR)/html/index.html (0 doxygen warnings)"
+	@mkdir -p $(DOC_DIR)/lidar_io && rm -rf $(DOC_DIR)/lidar_io/html
+	@( cat lidar_io/doc/Doxyfile; echo "OUTPUT_DIRECTORY = $(DOC_DIR)/lidar_io" ) | doxygen - 2> $(DOC_DIR)/lidar_io/warnings.log; \
+	status=$$?; \
+	if [ $$status -ne 0 ] || [ -s $(DOC_DIR)/lidar_io/warnings.log ]; then \
+	  cat $(DOC_DIR)/lidar_io/warnings.log >&2; \
+	  echo "make doc: doxygen failed or warned on lidar_io (exit code $$status)" >&2; \
+	  exit 1; \
+	fi
+	@echo "Manuals: $(DOC_DIR)/html/index.html, $(DOC_DIR)/lidar_io/html/index.html (0 doxygen warnings)"
 
 test-deps:
 	@$(MAKE) --no-print-directory deps DEBIAN_PACKAGES="$(TEST_PACKAGES)"

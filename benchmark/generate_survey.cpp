@@ -13,7 +13,7 @@
 // written a chunk at a time: the memory does not grow with the survey. The same seed writes the
 // same bytes.
 
-#include <CGAL/Sigmoid_neighborhoods/IO/Las_writer.h>
+#include <Lidar_io/Las_writer.h>
 
 #include <algorithm>
 #include <chrono>
@@ -33,8 +33,6 @@
 #include <unistd.h>
 
 namespace {
-
-namespace SN = CGAL::Sigmoid_neighborhoods;
 
 const char* const USAGE =
   "usage: generate_survey POINTS DIR [--tile-size S] [--density D] [--seed SEED] [--origin X Y] [--name STEM]\n"
@@ -280,19 +278,19 @@ const std::string WKT = "LOCAL_CS[\"synthetic survey\",LOCAL_DATUM[\"none\",0],U
 
 // The layout of a tile: point format 6, centimetres from the survey's origin, its CRS as a WKT VLR,
 // a fixed creation date (the files repeat bit for bit).
-SN::Las_output_layout tile_layout(const Survey& s)
+Lidar_io::Las_output_layout tile_layout(const Survey& s)
 {
-  SN::Las_output_layout l = SN::las_output_layout_for({{0., 0., 0.}}, {{0., 0., 0.}}, {}, 6);
+  Lidar_io::Las_output_layout l = Lidar_io::las_output_layout_for({{0., 0., 0.}}, {{0., 0., 0.}}, {}, 6);
   l.scale = {{SCALE, SCALE, SCALE}};
   l.offset = {{s.origin_x, s.origin_y, 0.}};
   unsigned char* h = l.header.data();
-  SN::store_little_endian<std::uint16_t>(h + 6, 0x11); // adjusted standard GPS time, WKT
+  Lidar_io::store_little_endian<std::uint16_t>(h + 6, 0x11); // adjusted standard GPS time, WKT
   std::memset(h + 26, 0, 64);
   std::strncpy(reinterpret_cast<char*>(h + 26), "synthetic survey", 32);
   std::strncpy(reinterpret_cast<char*>(h + 58), "generate_survey", 32);
-  SN::store_little_endian<std::uint16_t>(h + 90, 1);
-  SN::store_little_endian<std::uint16_t>(h + 92, 2026);
-  SN::add_las_vlr(l, "LASF_Projection", 2112, "OGC WKT",
+  Lidar_io::store_little_endian<std::uint16_t>(h + 90, 1);
+  Lidar_io::store_little_endian<std::uint16_t>(h + 92, 2026);
+  Lidar_io::add_las_vlr(l, "LASF_Projection", 2112, "OGC WKT",
                   std::vector<unsigned char>(WKT.c_str(), WKT.c_str() + WKT.size() + 1)); // with its null
   return l;
 }
@@ -335,7 +333,7 @@ std::uint64_t write_tile(const Survey& s, const Terrain& terrain, std::int64_t i
   std::uint64_t written = 0;
   try
   {
-  SN::Las_writer writer(out, tile_layout(s));
+  Lidar_io::Las_writer writer(out, tile_layout(s));
 
   // Integer coordinates of the tile's cell, [X0, X0 + cells): every point inside it.
   const std::int64_t cells = std::llround(side / SCALE);
@@ -365,15 +363,15 @@ std::uint64_t write_tile(const Survey& s, const Terrain& terrain, std::int64_t i
           std::clamp<std::int64_t>(std::llround(ret.y / SCALE), first_y, first_y + cells - 1),
           std::llround(ret.z / SCALE)};
         for(int c = 0; c < 3; ++c)
-          SN::store_little_endian<std::int32_t>(record + 4 * c, std::int32_t(xyz[c]));
+          Lidar_io::store_little_endian<std::int32_t>(record + 4 * c, std::int32_t(xyz[c]));
         const double brightness = ret.label == BUILDING ? 14000. : ret.label == VEGETATION ? 5000. : 9000.;
-        SN::store_little_endian<std::uint16_t>(record + 12, std::uint16_t(std::clamp(brightness + 1500. * r.normal(), 0., 65535.)));
+        Lidar_io::store_little_endian<std::uint16_t>(record + 12, std::uint16_t(std::clamp(brightness + 1500. * r.normal(), 0., 65535.)));
         record[14] = std::uint8_t(ret.number | (ret.of << 4));
         record[15] = std::uint8_t(backwards ? 0 : 0x40); // scan direction flag
         record[16] = ret.label;
-        SN::store_little_endian<std::int16_t>(record + 18, std::int16_t(std::lround((along / side - 0.5) * 20. / 0.006)));
-        SN::store_little_endian<std::uint16_t>(record + 20, std::uint16_t(1 + j % 65535)); // a flight line per row of tiles
-        SN::store_little_endian<double>(record + 22, gps_time);
+        Lidar_io::store_little_endian<std::int16_t>(record + 18, std::int16_t(std::lround((along / side - 0.5) * 20. / 0.006)));
+        Lidar_io::store_little_endian<std::uint16_t>(record + 20, std::uint16_t(1 + j % 65535)); // a flight line per row of tiles
+        Lidar_io::store_little_endian<double>(record + 22, gps_time);
         chunk.insert(chunk.end(), record, record + RECORD_BYTES);
       }
       if(chunk.size() >= CHUNK_POINTS * RECORD_BYTES)

@@ -7,10 +7,10 @@
 // points and fields, duplicates merged, no normals), which is what a command pays.
 // usage: laz_decode_benchmark [--threads 1,2] [--runs 5 (0: one run, no warm-up)] FILE...
 
-#include <CGAL/Sigmoid_neighborhoods/IO/Laz_writer.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/las_output_layout_like.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_las_records.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
+#include <Lidar_io/Laz_writer.h>
+#include <Lidar_io/las_output_layout_like.h>
+#include <Lidar_io/read_las_records.h>
+#include <Sigmoid_neighborhoods_readers/read_oriented_point_set.h>
 
 #include <algorithm>
 #include <chrono>
@@ -56,7 +56,7 @@ double median_seconds(unsigned int runs, const Run& run)
 std::size_t decode_records(const std::string& path, unsigned int threads)
 {
   std::size_t checksum = 0;
-  SN::read_las_records(
+  Lidar_io::read_las_records(
     path, [&](std::size_t, const unsigned char* r, std::size_t count) {
       checksum += count + r[0]; // keeps the records alive for the optimizer
     },
@@ -65,10 +65,10 @@ std::size_t decode_records(const std::string& path, unsigned int threads)
 }
 
 // The bytes of the LAZ file that holds `records` laid out by `layout`, compressed on `threads`.
-std::size_t encode_records(const SN::Las_output_layout& layout, const std::string& records, unsigned int threads)
+std::size_t encode_records(const Lidar_io::Las_output_layout& layout, const std::string& records, unsigned int threads)
 {
   std::stringstream out;
-  SN::Laz_writer<> writer(out, layout, threads);
+  Lidar_io::Laz_writer<> writer(out, layout, threads);
   writer.write(reinterpret_cast<const unsigned char*>(records.data()), records.size() / layout.record_length);
   writer.close();
   return std::size_t(out.tellp());
@@ -107,12 +107,12 @@ int main(int argc, char** argv)
   {
     try
     {
-      const SN::Las_header h = SN::read_las_header(path);
+      const Lidar_io::Las_header h = Lidar_io::read_las_header(path);
       std::string records;
-      SN::read_las_records(path, [&](std::size_t, const unsigned char* r, std::size_t count) {
+      Lidar_io::read_las_records(path, [&](std::size_t, const unsigned char* r, std::size_t count) {
         records.append(reinterpret_cast<const char*>(r), count * h.record_length);
       });
-      const SN::Las_output_layout layout = SN::las_output_layout_like(path, {});
+      const Lidar_io::Las_output_layout layout = Lidar_io::las_output_layout_like(path, {});
       for(unsigned int t : thread_counts)
       {
         const double decode = median_seconds(runs, [&] { decode_records(path, t); });

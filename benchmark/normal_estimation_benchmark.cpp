@@ -17,8 +17,8 @@
 #include <CGAL/Sigmoid_neighborhoods/compute_k_nearest_neighbors.h>
 #include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/orient_normals.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_polygon_mesh.h>
+#include <Sigmoid_neighborhoods_readers/read_oriented_point_set.h>
+#include <Sigmoid_neighborhoods_readers/read_polygon_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>

@@ -24,7 +24,7 @@
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Sigmoid_neighborhoods.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
+#include <Sigmoid_neighborhoods_readers/read_oriented_point_set.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -459,7 +459,7 @@ void run(const Data& data, int threads, bool with_plain, int repeat)
   std::printf("  (a) CGAL Local_eigen_analysis k=20: %10.0f points/s (%.2f s, sequential)\n", rate(a), a.seconds);
   if(with_plain)
     std::printf("  (b) plain loop, 420 triples:       %10.0f points/s (%.2f s)\n", rate(b), b.seconds);
-  std::printf("  vector instructions: %s\n", SN::vector_instructions_name(SN::vector_instructions()));
+  std::printf("  vector instructions: %s\n", SN::vector_instructions_name(SN::widest_vector_instructions()));
   std::printf("  (c) optimal search:                 %10.0f points/s (%.2f s), %.0f bytes/point above the input\n",
               rate(c), c.seconds, c.extra_bytes / double(n));
   std::printf("  (d) features, one (a, b, k):        %10.0f points/s (%.2f s)\n", rate(d), d.seconds);

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The peer of optimal_search_benchmark (pgeof_peer.cpp): pgeof's optimal neighborhood size on
+// The peer of optimal_search_benchmark (pgeof_peer.cpp): pgeof 0.3.3's optimal neighborhood size on
 // nanoflann, compiled apart, as pgeof is.
 
 #ifndef SIGMOID_NEIGHBORHOODS_BENCHMARK_PGEOF_PEER_H
@@ -33,7 +33,7 @@ struct Result
   std::uint8_t k = 0;
 };
 
-// pgeof's compute_features_optimal: one k-NN query of k_max points (the point among them) per
+// pgeof 0.3.3's compute_features_optimal: one k-NN query of k_max points (the point among them) per
 // point, the k in [k_min, k_max] of least eigenentropy, the features there. Tree included.
 std::vector<Result> optimal_features(const Peer_points& points, int threads, unsigned int k_min = 6,
                                      unsigned int k_max = 20);

@@ -24,12 +24,12 @@ ParallelCompile("NPY_NUM_BUILD_JOBS").install()
 
 # The units, the longest first (CPU with -O3: about 30, 25 to 30, 20 and 15 s), so that two compilers
 # finish together (the first free takes denoising.cpp, the other the last unit): the one reader the
-# module calls (../src/Sigmoid_neighborhoods/read_oriented_point_set.cpp, the point-set reader of IO.cpp alone,
-# compiled once: CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO),
+# module calls (../tools/readers/src/read_oriented_point_set.cpp, the point-set reader of readers.cpp alone,
+# compiled once: SIGMOID_NEIGHBORHOODS_READERS_COMPILED),
 # the kernels (src/Sigmoid_neighborhoods/core.cpp, compiled once: CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE),
 # then the bindings: denoising.cpp, and points.cpp, features.cpp and module.cpp in one unit
 # (src/points_features_module.cpp includes them).
-UNITS = ["../src/Sigmoid_neighborhoods/read_oriented_point_set.cpp", "../src/Sigmoid_neighborhoods/core.cpp",
+UNITS = ["../tools/readers/src/read_oriented_point_set.cpp", "../src/Sigmoid_neighborhoods/core.cpp",
          "src/denoising.cpp", "src/points_features_module.cpp"]
 INCLUDED = ["src/points.cpp", "src/features.cpp", "src/module.cpp"]
 assert sorted(UNITS + INCLUDED) == sorted(UNITS[:2] +
@@ -58,8 +58,9 @@ core = Pybind11Extension(
     "sigmoid_neighborhoods._core",
     UNITS,
     depends=INCLUDED,  # a change to one of them rebuilds the module
-    include_dirs=[str(REPOSITORY / "include"), "/usr/include/eigen3"],
-    define_macros=[("NDEBUG", None), ("CGAL_EIGEN3_ENABLED", None), ("CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_IO", None),
+    include_dirs=[str(REPOSITORY / "include"), str(REPOSITORY / "lidar_io" / "include"),
+                  str(REPOSITORY / "tools" / "readers" / "include"), "/usr/include/eigen3"],
+    define_macros=[("NDEBUG", None), ("CGAL_EIGEN3_ENABLED", None), ("SIGMOID_NEIGHBORHOODS_READERS_COMPILED", None),
                    ("CGAL_SIGMOID_NEIGHBORHOODS_COMPILED_CORE", None), ("SIGMOID_NEIGHBORHOODS_VERSION", f'"{VERSION}"')],
     # the flags of the CMake build (Release): the same code as the C++ library's tests check
     # -frounding-math: CGAL's interval arithmetic (the exact predicates of the readers) needs it, as CGAL's CMake sets

@@ -7,9 +7,9 @@
 #include "test_models.h"
 
 #include <CGAL/Sigmoid_neighborhoods.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_polygon_mesh.h>
+#include <Sigmoid_neighborhoods_readers/Input_error.h>
+#include <Sigmoid_neighborhoods_readers/read_oriented_point_set.h>
+#include <Sigmoid_neighborhoods_readers/read_polygon_mesh.h>
 #include <CGAL/IO/OFF.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
@@ -816,7 +816,9 @@ TEST_CASE("CLI: every command reads through the package's reader", "[cli][bad-in
 TEST_CASE("CLI: the tool is a thin shell: no internal names, no shell, no global thread count, no host path",
           "[cli]")
 {
-  const std::filesystem::path tools = std::filesystem::path(SN_TEST_DATA_DIR) / ".." / ".." / "tools";
+  // the tool's commands; its readers (tools/readers) are a library with internals of its own
+  const std::filesystem::path tools =
+    std::filesystem::path(SN_TEST_DATA_DIR) / ".." / ".." / "tools" / "sigmoid-neighborhoods";
   std::size_t files = 0;
   for(const auto& entry : std::filesystem::recursive_directory_iterator(tools))
   {

@@ -115,7 +115,9 @@ TEST_CASE("dot-product form equals the angle form bit for bit", "[sigmoid]")
   CHECK(compared > 50000);
 }
 
-TEST_CASE("weights are symmetric", "[sigmoid]")
+// w_ij = w_ji needs no test: normal_cosine() is one product sum, which commutes bit for bit. What can
+// go wrong is the line form: the angle between lines is the smaller of the angles to m and to -m.
+TEST_CASE("line angles: the smaller angle to m and -m, in both forms", "[sigmoid]")
 {
   std::mt19937_64 rng(3);
   std::normal_distribution<double> g;
@@ -125,7 +127,11 @@ TEST_CASE("weights are symmetric", "[sigmoid]")
     Eigen::Vector3d n(g(rng), g(rng), g(rng)), m(g(rng), g(rng), g(rng));
     n.normalize();
     m.normalize();
-    CHECK(s(SN::normal_angle(n, m)) == s(SN::normal_angle(m, n)));
+    const double line = SN::normal_line_angle(n, m);
+    CHECK(line <= pi / 2);
+    CHECK(line == (std::min)(SN::normal_angle(n, m), SN::normal_angle(n, Eigen::Vector3d(-m))));
+    const double c = n[0] * m[0] + n[1] * m[1] + n[2] * m[2]; // the package's order of the sum
+    CHECK(s.weight_from_cosine((std::min)(std::abs(c), 1.)) == s(line));
   }
 }
 

@@ -8,9 +8,9 @@
 // line and exit code 3, inside the parallel search too, and `evaluate` goes on after it. XYZ files
 // parsed in parallel give the points and the first error of a sequential reading.
 
-#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_polygon_mesh.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_xyz.h>
+#include <Sigmoid_neighborhoods_readers/read_oriented_point_set.h>
+#include <Sigmoid_neighborhoods_readers/read_polygon_mesh.h>
+#include <Sigmoid_neighborhoods_readers/internal/read_xyz.h>
 #include <CGAL/Surface_mesh.h>
 
 #include "test_models.h"

@@ -313,7 +313,7 @@ TEST_CASE("pyramid features: nearly the same on a surface thinned 4x, at the lev
   }
 }
 
-TEST_CASE("classifier model: the pyramid's cell sizes and k round trip; old models load without them",
+TEST_CASE("classifier model: the pyramid's cell sizes and k round trip, and old models load without them",
           "[pyramid][classification]")
 {
   using namespace sigmoid_tool;

@@ -6,10 +6,10 @@
 // and on the six IGN LiDAR HD tiles of the shared data; without halos, the share of points whose
 // records differ (the border effect); the catalog's refusals.
 
-#include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_tile_catalog.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_tile_with_halo.h>
+#include <Sigmoid_neighborhoods_readers/Input_error.h>
+#include <Sigmoid_neighborhoods_readers/read_oriented_point_set.h>
+#include <Sigmoid_neighborhoods_readers/read_tile_catalog.h>
+#include <Sigmoid_neighborhoods_readers/read_tile_with_halo.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
 
 #include <catch2/catch.hpp>
@@ -99,7 +99,7 @@ struct Union_records
   std::vector<SN::Optimal_sigmoid_neighborhood> records;
 };
 
-Union_records union_records(const SN::Tile_catalog& catalog, const SN::Normal_options& normals, unsigned int k_max)
+Union_records union_records(const Lidar_io::Tile_catalog& catalog, const SN::Normal_options& normals, unsigned int k_max)
 {
   SN::Normal_options kept = normals;
   kept.kept_neighbors = k_max;
@@ -111,7 +111,7 @@ Union_records union_records(const SN::Tile_catalog& catalog, const SN::Normal_op
 
 // Every tile with its halo against the union: the same points, in the same order, with the same
 // normals, labels and records, bit for bit. Returns the tiles' halo widths.
-std::vector<double> check_tiles_equal_union(const SN::Tile_catalog& catalog, const SN::Normal_options& normals,
+std::vector<double> check_tiles_equal_union(const Lidar_io::Tile_catalog& catalog, const SN::Normal_options& normals,
                                             unsigned int k_max, const Union_records& u,
                                             const SN::Halo_options& halo = SN::Halo_options())
 {
@@ -170,7 +170,7 @@ std::vector<double> check_tiles_equal_union(const SN::Tile_catalog& catalog, con
 
 // A grid of integer positions (ties of distances everywhere), heights of a few levels, cut into
 // 3 x 2 tiles of 20 x 20 as XYZ files; the points of a seam in both tiles, as surveys deliver them.
-SN::Tile_catalog grid_catalog(bool with_normals)
+Lidar_io::Tile_catalog grid_catalog(bool with_normals)
 {
   const std::string dir = catalog_scratch(with_normals ? "grid_with_normals" : "grid");
   for(int tx = 0; tx < 3; ++tx)
@@ -194,7 +194,7 @@ SN::Tile_catalog grid_catalog(bool with_normals)
 
 TEST_CASE("Tile catalog: tiles with halos equal the union on a grid of ties and seam duplicates", "[catalog]")
 {
-  const SN::Tile_catalog catalog = grid_catalog(false);
+  const Lidar_io::Tile_catalog catalog = grid_catalog(false);
   REQUIRE(catalog.tiles.size() == 6);
   CHECK(catalog.tiles[0].name == "tile_0_0");
   CHECK(catalog.tiles[1].name == "tile_0_1");
@@ -218,7 +218,7 @@ TEST_CASE("Tile catalog: tiles with halos equal the union on a grid of ties and 
 
   SECTION("normals from the files: the rows alone need the halo")
   {
-    const SN::Tile_catalog with_normals = grid_catalog(true);
+    const Lidar_io::Tile_catalog with_normals = grid_catalog(true);
     check_tiles_equal_union(with_normals, SN::Normal_options(), 12,
                             union_records(with_normals, SN::Normal_options(), 12));
   }
@@ -250,14 +250,11 @@ TEST_CASE("Tile catalog: tiles with halos equal the union on a grid of ties and 
   }
 }
 
-TEST_CASE("Tile catalog: the six IGN LiDAR HD tiles, with and without halos", "[catalog][las]")
+// [shared-data]: a ctest entry of its own, skipped where ../shared/data is missing (test/CMakeLists.txt)
+TEST_CASE("Tile catalog: the six IGN LiDAR HD tiles, with and without halos", "[catalog][las][shared-data]")
 {
   const std::string dir = SN_SHARED_DATA_DIR "/labeled";
-  if(!std::filesystem::exists(dir + "/ign_lidarhd_77050_627755.las"))
-  {
-    WARN("not found, skipped: " << dir);
-    return;
-  }
+  REQUIRE(std::filesystem::exists(dir + "/ign_lidarhd_77050_627755.las"));
   // the six adjacent tiles, listed: the folder holds other surveys too
   const std::string list = catalog_scratch("six_ign_tiles") + "/tiles.txt";
   {
@@ -266,7 +263,7 @@ TEST_CASE("Tile catalog: the six IGN LiDAR HD tiles, with and without halos", "[
                             "77060_627760"})
       out << dir << "/ign_lidarhd_" << tile << ".las\n";
   }
-  const SN::Tile_catalog catalog = SN::read_tile_catalog(list);
+  const Lidar_io::Tile_catalog catalog = SN::read_tile_catalog(list);
   REQUIRE(catalog.tiles.size() == 6);
   CHECK(catalog.tiles[0].name == "ign_lidarhd_77050_627755");
   CHECK(catalog.tiles[0].points == 73355);
@@ -287,7 +284,7 @@ TEST_CASE("Tile catalog: the six IGN LiDAR HD tiles, with and without halos", "[
   for(std::size_t i = 0; i < all.points.size(); ++i)
     union_index.emplace(position_bits(all.points[i]), i);
   std::size_t points = 0, differing = 0;
-  for(const SN::Catalog_tile& t : catalog.tiles)
+  for(const Lidar_io::Catalog_tile& t : catalog.tiles)
   {
     SN::Normal_options alone = up;
     alone.kept_neighbors = SN::DEFAULT_K_MAX;
@@ -326,7 +323,7 @@ TEST_CASE("Tile catalog: refusals", "[catalog]")
   std::ofstream(listed + "/tiles/west.xyz") << "0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n1 1 0 0 0 1\n";
   std::ofstream(listed + "/tiles/east.xyz") << "2 0 0\n3 0 0\n2 1 0\n3 1 0\n";
   std::ofstream(listed + "/list.txt") << "# west first\ntiles/west.xyz\n\n  tiles/east.xyz  \n";
-  const SN::Tile_catalog list = SN::read_tile_catalog(listed + "/list.txt");
+  const Lidar_io::Tile_catalog list = SN::read_tile_catalog(listed + "/list.txt");
   REQUIRE(list.tiles.size() == 2);
   CHECK(list.tiles[0].name == "west");
   CHECK(list.index_of("east") == 1);
@@ -352,7 +349,7 @@ TEST_CASE("Tile catalog: refusals", "[catalog]")
     f.seekp(179);
     f.write(reinterpret_cast<const char*>(&max_x), sizeof(max_x)); // little-endian hosts only, as the tests run
     f.close();
-    const SN::Tile_catalog bad = SN::read_tile_catalog(forged);
+    const Lidar_io::Tile_catalog bad = SN::read_tile_catalog(forged);
     CHECK_THROWS_WITH(SN::read_tile_with_halo(bad, 0, 20, SN::Normal_options()),
                       Catch::Contains("lies outside the tile's extent in the catalog (the header's bounding box is wrong)"));
   }
@@ -365,7 +362,7 @@ TEST_CASE("Tile catalog: duplicates within and across tiles, a tile of seam dupl
   std::ofstream(dir + "/a.xyz") << "0 0 0\n1 0 0\n2 -0 0\n0 1 0\n1 1 0\n2 1 0.1\n0 2 0\n1 2 0\n2 2 0\n1 1 0\n";
   std::ofstream(dir + "/b.xyz") << "2 0 0\n2 1 0.1\n";
   std::ofstream(dir + "/c.xyz") << "3 0 0\n3 1 0.2\n3 2 0\n4 0 0\n4 1 0\n4 2 0.1\n";
-  const SN::Tile_catalog catalog = SN::read_tile_catalog(dir);
+  const Lidar_io::Tile_catalog catalog = SN::read_tile_catalog(dir);
   REQUIRE(catalog.tiles.size() == 3);
   SN::Normal_options o;
   o.neighbors = 4;

@@ -5,7 +5,7 @@
 
 #include "bindings.h"
 
-#include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
+#include <Sigmoid_neighborhoods_readers/Input_error.h>
 #include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
 
 #include <pybind11/pybind11.h>

@@ -6,10 +6,10 @@
 #include "bindings.h"
 #include "numpy_arrays.h"
 
-#include <CGAL/Sigmoid_neighborhoods/IO/Las_writer.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/Laz_writer.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
+#include <Lidar_io/Las_writer.h>
+#include <Lidar_io/Laz_writer.h>
+#include <Sigmoid_neighborhoods_readers/Input_error.h>
+#include <Sigmoid_neighborhoods_readers/read_oriented_point_set.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_height_features.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_k_nearest_neighbors.h>
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
@@ -127,9 +127,9 @@ std::optional<py::array_t<double, py::array::forcecast>> column_of(const py::obj
 }
 
 // The smallest extra bytes type that holds the dtype's values exactly.
-SN::Las_extra_bytes_type extra_bytes_type(const py::dtype& dtype)
+Lidar_io::Las_extra_bytes_type extra_bytes_type(const py::dtype& dtype)
 {
-  typedef SN::Las_extra_bytes_type T;
+  typedef Lidar_io::Las_extra_bytes_type T;
   const char kind = dtype.kind();
   const py::ssize_t size = dtype.itemsize();
   if(kind == 'f')
@@ -161,7 +161,7 @@ void write(const py::object& path, const py::object& points_object, const py::ob
   const auto returns = column_of(return_number, n, "return_number");
   const auto numbers = column_of(number_of_returns, n, "number_of_returns");
   const auto times = column_of(gps_time, n, "gps_time");
-  std::vector<SN::Las_extra_dimension> dimensions;
+  std::vector<Lidar_io::Las_extra_dimension> dimensions;
   std::vector<py::array_t<double, py::array::forcecast>> columns;
   if(!fields_object.is_none())
     for(const auto& item : fields_object.cast<py::dict>())
@@ -183,7 +183,7 @@ void write(const py::object& path, const py::object& points_object, const py::ob
       min[c] = i == 0 ? v : (std::min)(min[c], v);
       max[c] = i == 0 ? v : (std::max)(max[c], v);
     }
-  SN::Las_output_layout layout = SN::las_output_layout_for(min, max, dimensions); // ValueError: a bad name
+  Lidar_io::Las_output_layout layout = Lidar_io::las_output_layout_for(min, max, dimensions); // ValueError: a bad name
   const std::string temporary = filename + ".tmp";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
@@ -198,30 +198,30 @@ void write(const py::object& path, const py::object& points_object, const py::ob
         return std::isnan(v) ? 0. : std::clamp(std::nearbyint(v), 0., largest);
       };
       auto write_records = [&](auto& writer) {
-        const SN::Las_output_layout& l = writer.layout();
+        const Lidar_io::Las_output_layout& l = writer.layout();
         std::vector<unsigned char> record(l.record_length);
         for(std::size_t i = 0; i < n; ++i)
         {
           std::fill(record.begin(), record.end(), 0);
-          SN::store_las_coordinates(record.data(), l, {{points(i, 0), points(i, 1), points(i, 2)}});
-          SN::store_little_endian<std::uint16_t>(record.data() + 12, std::uint16_t(at(intensities, i, 0., 65535.)));
+          Lidar_io::store_las_coordinates(record.data(), l, {{points(i, 0), points(i, 1), points(i, 2)}});
+          Lidar_io::store_little_endian<std::uint16_t>(record.data() + 12, std::uint16_t(at(intensities, i, 0., 65535.)));
           record[14] = std::uint8_t(unsigned(at(returns, i, 1., 15.)) | unsigned(at(numbers, i, 1., 15.)) << 4);
           record[16] = std::uint8_t(at(classification, i, 0., 255.));
-          SN::store_little_endian<double>(record.data() + 22, times ? times->data()[i] : 0.);
+          Lidar_io::store_little_endian<double>(record.data() + 22, times ? times->data()[i] : 0.);
           for(std::size_t j = 0; j < columns.size(); ++j)
-            SN::store_las_extra(record.data(), l, j, columns[j].data()[i]);
+            Lidar_io::store_las_extra(record.data(), l, j, columns[j].data()[i]);
           writer.write(record.data(), 1);
         }
         writer.close();
       };
       if(extension == "laz")
       {
-        SN::Laz_writer<> writer(out, layout);
+        Lidar_io::Laz_writer<> writer(out, layout);
         write_records(writer);
       }
       else
       {
-        SN::Las_writer writer(out, layout);
+        Lidar_io::Las_writer writer(out, layout);
         write_records(writer);
       }
       out.close();

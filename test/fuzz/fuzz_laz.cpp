@@ -13,7 +13,7 @@
 // Built with SIGMOID_NEIGHBORHOODS_LIBFUZZER (clang, -fsanitize=fuzzer) this is the fuzzer;
 // without it, a `main` replays the files given on the command line.
 
-#include <CGAL/Sigmoid_neighborhoods/IO/internal/read_las.h>
+#include <Sigmoid_neighborhoods_readers/internal/read_las.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -36,8 +36,8 @@ std::string records(const std::string& bytes, unsigned int threads)
   std::istringstream in(bytes);
   try
   {
-    const SN::Las_header h = SN::internal::read_las_header(in, bytes.size());
-    SN::internal::for_each_las_record_block(in, h, threads, [&](std::size_t, const unsigned char* r, std::size_t n) {
+    const Lidar_io::Las_header h = Lidar_io::internal::read_las_header(in, bytes.size());
+    Lidar_io::internal::for_each_las_record_block(in, h, threads, [&](std::size_t, const unsigned char* r, std::size_t n) {
       out.append(reinterpret_cast<const char*>(r), n * h.record_length);
     });
   }

@@ -26,7 +26,7 @@
 #include "optimal_command.h"
 
 #include <CGAL/Sigmoid_neighborhoods.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
+#include <Sigmoid_neighborhoods_readers/read_oriented_point_set.h>
 
 #include <algorithm>
 #include <cmath>

@@ -49,8 +49,8 @@ int run_list(int argc, char** argv)
     return EXIT_OK;
   if(args.positional().size() != 1)
     throw Usage_error("catalog list needs SOURCE");
-  const SN::Tile_catalog catalog = read_catalog_argument(args.positional()[0]);
-  for(const SN::Catalog_tile& t : catalog.tiles)
+  const Lidar_io::Tile_catalog catalog = read_catalog_argument(args.positional()[0]);
+  for(const Lidar_io::Catalog_tile& t : catalog.tiles)
   {
     if(args.has("--names"))
     {
@@ -78,7 +78,7 @@ struct Tile_output
   std::string command, settings;
 };
 
-Tile_output read_tile_output(const std::string& folder, const SN::Catalog_tile& tile, const std::string& fingerprint,
+Tile_output read_tile_output(const std::string& folder, const Lidar_io::Catalog_tile& tile, const std::string& fingerprint,
                              std::size_t tiles)
 {
   Tile_output t;
@@ -137,7 +137,7 @@ int run_merge_tiles(int argc, char** argv)
   const std::string output = args.output();
   if(output.empty())
     throw Usage_error("catalog merge needs -o OUT.csv");
-  const SN::Tile_catalog catalog = read_catalog_argument(args.positional()[0]);
+  const Lidar_io::Tile_catalog catalog = read_catalog_argument(args.positional()[0]);
   const std::vector<std::string> folders(args.positional().begin() + 1, args.positional().end());
   const std::string fingerprint = catalog_fingerprint(catalog);
 
@@ -163,7 +163,7 @@ int run_merge_tiles(int argc, char** argv)
       throw Usage_error(folder + ": cannot list the folder (" + ec.message() + ")");
   }
   std::vector<std::string> missing;
-  for(const SN::Catalog_tile& t : catalog.tiles)
+  for(const Lidar_io::Catalog_tile& t : catalog.tiles)
     if(folder_of.count(t.name) == 0)
       missing.push_back(t.name);
   if(!missing.empty())
@@ -178,14 +178,14 @@ int run_merge_tiles(int argc, char** argv)
     for(const auto& f : folder_of)
     {
       bool known = false;
-      for(const SN::Catalog_tile& t : catalog.tiles)
+      for(const Lidar_io::Catalog_tile& t : catalog.tiles)
         known = known || t.name == f.first;
       if(!known)
         throw Usage_error(f.second + ": " + f.first + ".tile.json is not a tile of " + args.positional()[0]);
     }
 
   std::vector<Tile_output> outputs;
-  for(const SN::Catalog_tile& t : catalog.tiles)
+  for(const Lidar_io::Catalog_tile& t : catalog.tiles)
   {
     outputs.push_back(read_tile_output(folder_of[t.name], t, fingerprint, catalog.tiles.size()));
     if(outputs.back().command != outputs.front().command || outputs.back().settings != outputs.front().settings)

@@ -24,10 +24,10 @@ std::vector<std::string> without_catalog_options(std::vector<std::string> valued
   return valued;
 }
 
-std::string catalog_fingerprint(const SN::Tile_catalog& catalog)
+std::string catalog_fingerprint(const Lidar_io::Tile_catalog& catalog)
 {
   std::string text;
-  for(const SN::Catalog_tile& t : catalog.tiles)
+  for(const Lidar_io::Catalog_tile& t : catalog.tiles)
     text += t.name + ':' + std::to_string(t.points) + ';';
   std::uint64_t hash = 14695981039346656037ull; // FNV-1a: the same on every machine and build
   for(unsigned char c : text)
@@ -35,7 +35,7 @@ std::string catalog_fingerprint(const SN::Tile_catalog& catalog)
   return std::to_string(hash);
 }
 
-SN::Tile_catalog read_catalog_argument(const std::string& source)
+Lidar_io::Tile_catalog read_catalog_argument(const std::string& source)
 {
   try
   {
@@ -66,7 +66,7 @@ Input_points read_input_points(const Arguments& args, const std::string& command
   if(args.positional().size() != leading)
     throw Usage_error(command + " takes --catalog SOURCE or INPUT, not both");
   const std::string source = args.get("--catalog");
-  const SN::Tile_catalog catalog = read_catalog_argument(source);
+  const Lidar_io::Tile_catalog catalog = read_catalog_argument(source);
   in.catalog_fingerprint = catalog_fingerprint(catalog);
   in.catalog_tiles = catalog.tiles.size();
   SN::Normal_options o = normals;

@@ -11,8 +11,8 @@
 #include "model_input.h"
 #include "phase_times.h"
 
-#include <CGAL/Sigmoid_neighborhoods/IO/read_tile_catalog.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_tile_with_halo.h>
+#include <Sigmoid_neighborhoods_readers/read_tile_catalog.h>
+#include <Sigmoid_neighborhoods_readers/read_tile_with_halo.h>
 
 #include <nlohmann/json.hpp>
 
@@ -60,9 +60,9 @@ struct Input_points
 };
 
 // The tiles of SOURCE, in order, with their point counts: two runs of one catalog agree on it.
-std::string catalog_fingerprint(const SN::Tile_catalog& catalog);
+std::string catalog_fingerprint(const Lidar_io::Tile_catalog& catalog);
 
-SN::Tile_catalog read_catalog_argument(const std::string& source);
+Lidar_io::Tile_catalog read_catalog_argument(const std::string& source);
 
 // The points of the command: INPUT, or --catalog with or without --tile; `k` is the neighbors of the
 // computation (the halo holds them), `minimum_halo` what else it needs around the tile, `leading`

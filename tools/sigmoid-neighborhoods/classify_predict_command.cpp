@@ -81,12 +81,12 @@ std::vector<int> read_class_codes(const Arguments& args, const Label_mapping& la
 void write_prediction_las(const std::string& path, const Las_output_points& points, const Featured_file& file,
                           const Prediction& p, const std::vector<int>& codes, unsigned int threads)
 {
-  typedef CGAL::Sigmoid_neighborhoods::Las_extra_bytes_type Type;
+  typedef Lidar_io::Las_extra_bytes_type Type;
   Las_results r;
   r.dimensions = {{"confidence", "predicted class's confidence", Type::FLOAT},
                   {"original_class", "classification before", Type::UNSIGNED_CHAR}};
   bool checked = false;
-  r.complete = [&](unsigned char* record, const CGAL::Sigmoid_neighborhoods::Las_output_layout& l, std::size_t i) {
+  r.complete = [&](unsigned char* record, const Lidar_io::Las_output_layout& l, std::size_t i) {
     if(!checked && !l.has_extended_format())
       for(int code : codes)
         if(code > 31)
@@ -99,8 +99,8 @@ void write_prediction_las(const std::string& path, const Las_output_points& poin
     const unsigned int original = l.has_extended_format() ? record[16] : (record[15] & 0x1F);
     const unsigned int code = c < 0 ? 1u : unsigned(codes[std::size_t(c)]);
     record[field] = l.has_extended_format() ? std::uint8_t(code) : std::uint8_t((record[15] & 0xE0) | code);
-    CGAL::Sigmoid_neighborhoods::store_las_extra(record, l, 0, c < 0 ? 0. : double(p.confidence[std::size_t(c)][i]));
-    CGAL::Sigmoid_neighborhoods::store_las_extra(record, l, 1, double(original));
+    Lidar_io::store_las_extra(record, l, 0, c < 0 ? 0. : double(p.confidence[std::size_t(c)][i]));
+    Lidar_io::store_las_extra(record, l, 1, double(original));
   };
   write_las_results(path, points, file.model, r, threads);
 }

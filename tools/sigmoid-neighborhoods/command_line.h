@@ -9,7 +9,7 @@
 
 #include "tool_paths.h"
 
-#include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
+#include <Sigmoid_neighborhoods_readers/Input_error.h>
 #include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
 
 #include <CGAL/number_type_config.h>

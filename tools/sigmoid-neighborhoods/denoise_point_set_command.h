@@ -15,7 +15,7 @@
 #include "ply_output.h"
 
 #include <CGAL/Sigmoid_neighborhoods/denoise_point_set.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_polygon_mesh.h>
+#include <Sigmoid_neighborhoods_readers/read_polygon_mesh.h>
 
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/OBJ.h>
@@ -136,10 +136,10 @@ inline void write_denoised_las(const std::string& path, const std::string& input
                                const std::vector<SN::Oriented_point_set::Vector_3>& normals, unsigned int threads)
 {
   Las_results r = filtered_normal_results(normals);
-  r.complete = [&denoised, store_normals = r.complete](unsigned char* record, const SN::Las_output_layout& l,
+  r.complete = [&denoised, store_normals = r.complete](unsigned char* record, const Lidar_io::Las_output_layout& l,
                                                        std::size_t i) {
     const auto& p = denoised.points[i];
-    SN::store_las_coordinates(record, l, {{p.x(), p.y(), p.z()}});
+    Lidar_io::store_las_coordinates(record, l, {{p.x(), p.y(), p.z()}});
     store_normals(record, l, i);
   };
   write_las_results(path, Las_output_points{input}, denoised, r, threads);

@@ -15,7 +15,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/Point_evaluation.h>
 #include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
+#include <Sigmoid_neighborhoods_readers/Input_error.h>
 #include <CGAL/Real_timer.h>
 
 #include <unistd.h>
@@ -357,14 +357,14 @@ inline int run_evaluate(int argc, char** argv)
   settings.a_grid = options.a_grid; // sorted and deduplicated, as the statistics keep them
   settings.b_grid = options.b_grid;
   SN::Normal_options normal_options = read_normal_options(args);
-  std::unique_ptr<SN::Tile_catalog> catalog;
+  std::unique_ptr<Lidar_io::Tile_catalog> catalog;
   std::vector<Model_file> models;
   if(args.has("--catalog"))
   {
-    catalog.reset(new SN::Tile_catalog(read_catalog_argument(args.get("--catalog"))));
+    catalog.reset(new Lidar_io::Tile_catalog(read_catalog_argument(args.get("--catalog"))));
     if(!args.has("--orientation") && !args.has("--viewpoint"))
       normal_options.orientation = SN::Normal_orientation::UPWARD; // exact per tile
-    for(const SN::Catalog_tile& t : catalog->tiles)
+    for(const Lidar_io::Catalog_tile& t : catalog->tiles)
     {
       std::error_code ec;
       const std::uintmax_t bytes = fs::file_size(t.path, ec);

@@ -15,7 +15,7 @@
 #include "json.h"
 
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/Normal_options.h>
+#include <Sigmoid_neighborhoods_readers/Normal_options.h>
 #include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>
 
 #include <algorithm>

@@ -15,8 +15,8 @@
 #include "text_rows.h"
 
 #include <CGAL/Sigmoid_neighborhoods/filter_normals.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
+#include <Sigmoid_neighborhoods_readers/Input_error.h>
+#include <Sigmoid_neighborhoods_readers/read_oriented_point_set.h>
 
 
 #include <cstdint>
@@ -111,14 +111,14 @@ inline void write_filtered_xyz(std::ostream& out, const SN::Oriented_point_set& 
 // writes into a record (denoise: the moved coordinates).
 inline Las_results filtered_normal_results(const std::vector<SN::Oriented_point_set::Vector_3>& normals)
 {
-  typedef SN::Las_extra_bytes_type Type;
+  typedef Lidar_io::Las_extra_bytes_type Type;
   Las_results r;
   r.dimensions = {{"normal_x", "filtered unit normal, x", Type::FLOAT},
                   {"normal_y", "filtered unit normal, y", Type::FLOAT},
                   {"normal_z", "filtered unit normal, z", Type::FLOAT}};
-  r.complete = [&normals](unsigned char* record, const SN::Las_output_layout& l, std::size_t i) {
+  r.complete = [&normals](unsigned char* record, const Lidar_io::Las_output_layout& l, std::size_t i) {
     for(int c = 0; c < 3; ++c)
-      SN::store_las_extra(record, l, std::size_t(c), normals[i][c]);
+      Lidar_io::store_las_extra(record, l, std::size_t(c), normals[i][c]);
   };
   return r;
 }

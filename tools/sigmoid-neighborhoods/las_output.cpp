@@ -8,19 +8,21 @@
 #include "catalog_input.h"
 #include "command_line.h"
 
-#include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/Las_writer.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/Laz_writer.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/las_output_layout_like.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_las_records.h>
+#include <Sigmoid_neighborhoods_readers/Input_error.h>
+#include <Lidar_io/Las_writer.h>
+#include <Lidar_io/Laz_writer.h>
+#include <Lidar_io/las_output_layout_like.h>
+#include <Sigmoid_neighborhoods_readers/Input_error.h>
+#include <Lidar_io/read_las_records.h>
 
 #include <CGAL/Bbox_3.h>
 
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <ios>
 #include <limits>
@@ -65,13 +67,13 @@ void check_las_output(const std::string& path, const Las_output_points& points)
   unsigned int format = 0;
   try
   {
-    format = SN::read_las_header(points.source).point_format;
+    format = Lidar_io::read_las_header(points.source).point_format;
   }
   catch(const SN::Input_error&)
   {
     return; // reading the input says what is wrong with it
   }
-  if(SN::las_format_has_wave_packets(format))
+  if(Lidar_io::las_format_has_wave_packets(format))
     throw Usage_error("cannot write " + path + ": LAZ: the wave packets of point format " + std::to_string(format) +
                       " of " + points.source + " are not compressed (write the file as LAS)");
 }
@@ -84,7 +86,7 @@ template <typename Writer>
 void write_new_records(Writer& writer, const SN::Oriented_point_set& model, std::size_t begin, std::size_t end,
                        const Las_results& results)
 {
-  const SN::Las_output_layout& l = writer.layout();
+  const Lidar_io::Las_output_layout& l = writer.layout();
   constexpr std::size_t BLOCK = 65536;
   std::vector<unsigned char> block;
   for(std::size_t first = begin; first < end; first += BLOCK)
@@ -95,7 +97,7 @@ void write_new_records(Writer& writer, const SN::Oriented_point_set& model, std:
     {
       unsigned char* record = block.data() + i * l.record_length;
       const auto& p = model.points[first + i];
-      SN::store_las_coordinates(record, l, {{p.x(), p.y(), p.z()}});
+      Lidar_io::store_las_coordinates(record, l, {{p.x(), p.y(), p.z()}});
       record[14] = 0x11;
       if(!model.labels.empty() && model.labels[first + i] >= 0 && model.labels[first + i] <= 255)
         record[16] = std::uint8_t(model.labels[first + i]);
@@ -110,7 +112,7 @@ template <typename Writer>
 void write_copied_records(Writer& writer, const Las_output_points& points, const SN::Oriented_point_set& model,
                           const Las_results& results, unsigned int threads)
 {
-  const SN::Las_output_layout& l = writer.layout();
+  const Lidar_io::Las_output_layout& l = writer.layout();
   const std::string& source = points.source;
   const std::vector<std::size_t>* point_of = points.point_of_record != nullptr ? points.point_of_record
                                              : model.point_of_input.empty()    ? nullptr
@@ -118,7 +120,7 @@ void write_copied_records(Writer& writer, const Las_output_points& points, const
   const std::size_t inputs = point_of != nullptr ? point_of->size() : model.points.size();
   std::vector<unsigned char> block;
   std::size_t records = 0;
-  const SN::Las_header h = SN::read_las_records(
+  const Lidar_io::Las_header h = Lidar_io::read_las_records(
     source,
     [&](std::size_t first, const unsigned char* input, std::size_t count) {
       if(first + count > inputs)
@@ -140,6 +142,15 @@ void write_copied_records(Writer& writer, const Las_output_points& points, const
                       " when it was read: it changed on the way");
 }
 
+// The files' creation date: SOURCE_DATE_EPOCH's where it is set (files that repeat bit for bit, the
+// reproducible-builds convention), otherwise now.
+std::time_t creation_time()
+{
+  if(const char* epoch = std::getenv("SOURCE_DATE_EPOCH"))
+    return std::time_t(std::strtoll(epoch, nullptr, 10));
+  return std::time(nullptr);
+}
+
 } // namespace
 
 void write_las_results(const std::string& path, const Las_output_points& points, const SN::Oriented_point_set& model,
@@ -152,16 +163,16 @@ void write_las_results(const std::string& path, const Las_output_points& points,
   {
     const bool compressed = SN::lower_case_extension(path) == "laz";
     // The records, copied or new, go to a LAS or a LAZ writer alike.
-    auto write = [&](std::ofstream& out, SN::Las_output_layout layout, const auto& write_records) {
+    auto write = [&](std::ofstream& out, Lidar_io::Las_output_layout layout, const auto& write_records) {
       if(compressed)
       {
-        SN::Laz_writer<> writer(out, std::move(layout), threads);
+        Lidar_io::Laz_writer<> writer(out, std::move(layout), threads);
         write_records(writer);
         writer.close();
       }
       else
       {
-        SN::Las_writer writer(out, std::move(layout));
+        Lidar_io::Las_writer writer(out, std::move(layout));
         write_records(writer);
         writer.close();
       }
@@ -171,7 +182,7 @@ void write_las_results(const std::string& path, const Las_output_points& points,
       [&](std::ofstream& out) {
         if(ext == "las" || ext == "laz")
         {
-          write(out, SN::las_output_layout_like(source, results.dimensions),
+          write(out, Lidar_io::las_output_layout_like(source, results.dimensions),
                 [&](auto& writer) { write_copied_records(writer, points, model, results, threads); });
           return;
         }
@@ -185,7 +196,7 @@ void write_las_results(const std::string& path, const Las_output_points& points,
           min = {{box.xmin(), box.ymin(), box.zmin()}};
           max = {{box.xmax(), box.ymax(), box.zmax()}};
         }
-        write(out, SN::las_output_layout_for(min, max, results.dimensions),
+        write(out, Lidar_io::las_output_layout_for(min, max, results.dimensions, 6, creation_time()),
               [&](auto& writer) { write_new_records(writer, model, first, last, results); });
       },
       true);

@@ -8,8 +8,8 @@
 #ifndef SIGMOID_NEIGHBORHOODS_TOOL_LAS_OUTPUT_H
 #define SIGMOID_NEIGHBORHOODS_TOOL_LAS_OUTPUT_H
 
-#include <CGAL/Sigmoid_neighborhoods/IO/Las_output_layout.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
+#include <Lidar_io/Las_output_layout.h>
+#include <Sigmoid_neighborhoods_readers/Oriented_point_set.h>
 
 #include <cstddef>
 #include <functional>
@@ -45,10 +45,10 @@ Las_output_points las_output_points(const Input_points& in);
 // What a command adds to each record: its dimensions, and the values of one point.
 struct Las_results
 {
-  std::vector<CGAL::Sigmoid_neighborhoods::Las_extra_dimension> dimensions;
+  std::vector<Lidar_io::Las_extra_dimension> dimensions;
   // writes the values of `point` (an index into the model's points) into `record`, laid out by
   // `layout`: its added dimensions, and any field it changes (the classification)
-  std::function<void(unsigned char* record, const CGAL::Sigmoid_neighborhoods::Las_output_layout& layout,
+  std::function<void(unsigned char* record, const Lidar_io::Las_output_layout& layout,
                      std::size_t point)>
     complete;
 };

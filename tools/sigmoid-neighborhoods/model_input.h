@@ -10,7 +10,7 @@
 
 #include "command_line.h"
 
-#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
+#include <Sigmoid_neighborhoods_readers/read_oriented_point_set.h>
 
 #include <cstdio>
 #include <string>

@@ -18,7 +18,7 @@
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 #include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>
 #include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
+#include <Sigmoid_neighborhoods_readers/read_oriented_point_set.h>
 
 #include <cmath>
 #include <cstdint>
@@ -217,7 +217,7 @@ inline void write_optimal_ply(std::ostream& out, const SN::Oriented_point_set& m
 inline void write_optimal_las(const std::string& path, const Las_output_points& points, const SN::Oriented_point_set& model,
                               const std::vector<SN::Optimal_sigmoid_neighborhood>& records, const Search_options& o)
 {
-  typedef SN::Las_extra_bytes_type Type;
+  typedef Lidar_io::Las_extra_bytes_type Type;
   const Type count = o.k_max <= 255 ? Type::UNSIGNED_CHAR : Type::UNSIGNED_SHORT;
   Las_results r;
   r.dimensions = {{"normal_x", "unit normal, x", Type::FLOAT},
@@ -234,7 +234,7 @@ inline void write_optimal_las(const std::string& path, const Las_output_points& 
                   {"error_equal", "E_dim, equal weights", Type::FLOAT},
                   {"k_equal", "its neighbors (0: failure)", count}};
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  r.complete = [&](unsigned char* record, const SN::Las_output_layout& l, std::size_t i) {
+  r.complete = [&](unsigned char* record, const Lidar_io::Las_output_layout& l, std::size_t i) {
     const auto& n = model.normals[i];
     const auto& q = records[i];
     const bool failed = q.is_failure();
@@ -243,7 +243,7 @@ inline void write_optimal_las(const std::string& path, const Las_output_points& 
                              failed ? nan : q.features.scattering, double(q.features.label), q.error_equal,
                              double(q.k_equal)};
     for(std::size_t j = 0; j < l.added.size(); ++j)
-      SN::store_las_extra(record, l, j, values[j]);
+      Lidar_io::store_las_extra(record, l, j, values[j]);
   };
   write_las_results(path, points, model, r, o.threads);
 }

@@ -13,7 +13,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>
 #include <CGAL/Sigmoid_neighborhoods/Point_set_3_properties.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_oriented_point_set.h>
+#include <Sigmoid_neighborhoods_readers/read_oriented_point_set.h>
 
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Point_set_3/IO.h>

@@ -16,13 +16,13 @@
 #include "command_line.h"
 #include "phase_times.h"
 
-#include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/Las_writer.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/Laz_writer.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/las_output_layout_like.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/little_endian.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/lower_case_extension.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/read_las_records.h>
+#include <Sigmoid_neighborhoods_readers/Input_error.h>
+#include <Lidar_io/Las_writer.h>
+#include <Lidar_io/Laz_writer.h>
+#include <Lidar_io/las_output_layout_like.h>
+#include <Lidar_io/little_endian.h>
+#include <Sigmoid_neighborhoods_readers/Input_error.h>
+#include <Lidar_io/read_las_records.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -166,7 +166,7 @@ public:
   // Writes every tile with the layout `layout` (LAZ when `compressed`) from its raw records, tiles
   // on `threads` threads (or, with fewer tiles than threads, one tile at a time on all of them),
   // and removes the raw records.
-  void write_tiles(const CGAL::Sigmoid_neighborhoods::Las_output_layout& layout, bool compressed,
+  void write_tiles(const Lidar_io::Las_output_layout& layout, bool compressed,
                    unsigned int threads)
   {
     const bool tiles_in_parallel = m_tiles.size() >= threads;
@@ -233,7 +233,7 @@ private:
   }
 
   // The tile `t` written whole from its raw records (RETILE_READ_BYTES at a time), which are then removed.
-  void write_tile(Retiled_tile& t, const CGAL::Sigmoid_neighborhoods::Las_output_layout& layout, bool compressed,
+  void write_tile(Retiled_tile& t, const Lidar_io::Las_output_layout& layout, bool compressed,
                   unsigned int threads) const
   {
     namespace SN = CGAL::Sigmoid_neighborhoods;
@@ -263,12 +263,12 @@ private:
     {
       if(compressed)
       {
-        SN::Laz_writer<> writer(out, layout, threads);
+        Lidar_io::Laz_writer<> writer(out, layout, threads);
         copy(writer);
       }
       else
       {
-        SN::Las_writer writer(out, layout);
+        Lidar_io::Las_writer writer(out, layout);
         copy(writer);
       }
     }
@@ -466,12 +466,12 @@ inline int run_retile(int argc, char** argv, const char* usage)
   const std::string format = args.has("--format") ? args.get("--format") : extension;
   if(format != "las" && format != "laz")
     throw Usage_error("--format must be las or laz, got '" + format + "'");
-  SN::Las_header header;
-  SN::Las_output_layout layout;
+  Lidar_io::Las_header header;
+  Lidar_io::Las_output_layout layout;
   try
   {
-    header = SN::read_las_header(input);
-    layout = SN::las_output_layout_like(input, {});
+    header = Lidar_io::read_las_header(input);
+    layout = Lidar_io::las_output_layout_like(input, {});
   }
   catch(const SN::Input_error& e)
   {
@@ -480,7 +480,7 @@ inline int run_retile(int argc, char** argv, const char* usage)
   if(header.point_count == 0)
     throw Usage_error(input + ": no points, no tile to write");
   const unsigned int f = header.point_format;
-  if(format == "laz" && SN::las_format_has_wave_packets(f))
+  if(format == "laz" && Lidar_io::las_format_has_wave_packets(f))
     throw Usage_error(input + ": point format " + std::to_string(f) +
                       " refers to waveform packets, which LAZ tiles are not written with: --format las");
   check_retile_folder(folder);
@@ -489,7 +489,7 @@ inline int run_retile(int argc, char** argv, const char* usage)
   double tiling_seconds = 0.;
   try
   {
-    SN::read_las_records(
+    Lidar_io::read_las_records(
       input,
       [&](std::size_t first, const unsigned char* records, std::size_t count) {
         const auto start = std::chrono::steady_clock::now();
@@ -501,7 +501,7 @@ inline int run_retile(int argc, char** argv, const char* usage)
           {
             // The cells of compute_height_features(), shifted by the origin: floor((x - ox) / S).
             const double coordinate =
-              double(SN::load_little_endian<std::int32_t>(record + 4 * c)) * header.scale[c] + header.offset[c];
+              double(Lidar_io::load_little_endian<std::int32_t>(record + 4 * c)) * header.scale[c] + header.offset[c];
             const double index = std::floor((coordinate - (c == 0 ? origin_x : origin_y)) / size);
             if(!(std::abs(index) < RETILE_LARGEST_CELL_INDEX))
               throw Usage_error(input + ": point " + std::to_string(first + k) + " lies " +

@@ -99,6 +99,12 @@ namespace Sigmoid_neighborhoods {
       \cgalParamDefault{`DEFAULT_ANGLE_TOLERANCE` (`1e-6`)}
       \cgalParamExtra{in `[0, pi)`, otherwise `std::invalid_argument`}
     \cgalParamNEnd
+    \cgalParamNBegin{vector_instructions}
+      \cgalParamDescription{the vector instructions of the batched eigenvalues; the records are the same bits on each}
+      \cgalParamType{`Vector_instructions`}
+      \cgalParamDefault{`widest_vector_instructions()`}
+      \cgalParamExtra{one that `has_vector_instructions()` allows, otherwise `std::invalid_argument`}
+    \cgalParamNEnd
   \cgalNamedParamsEnd
 
   \pre at least `k_max + 1` points; finite coordinates; non-zero finite normals.

@@ -97,6 +97,8 @@ CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(fixed_k_t, fixed_k)
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(criterion_t, criterion)
 // every algorithm: the threads of one call with `CGAL::Parallel_tag` (0: the OpenMP or TBB default)
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(number_of_threads_t, number_of_threads)
+// the optimal search: the vector instructions of its batched eigenvalues (Vector_instructions)
+CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(vector_instructions_t, vector_instructions)
 // the search, the features, the evaluation and the filter: weights on the angle between normal lines
 CGAL_SIGMOID_NEIGHBORHOODS_ADD_NAMED_PARAMETER(line_angles_t, line_angles)
 // estimate_normals()

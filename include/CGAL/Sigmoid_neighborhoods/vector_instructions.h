@@ -6,9 +6,6 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_VECTOR_INSTRUCTIONS_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_VECTOR_INSTRUCTIONS_H
 
-#include <cstdlib>
-#include <cstring>
-
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
@@ -56,23 +53,14 @@ inline bool has_vector_instructions(Vector_instructions v)
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
-  The path the search uses, chosen once per process: the environment variable
-  `SIGMOID_NEIGHBORHOODS_SIMD` (`portable`, `avx2` or `avx512`) where it names a path that
-  has_vector_instructions() allows, otherwise the widest such path. Forcing a path is for tests and
-  measurements: the records do not depend on it.
+  The widest path that has_vector_instructions() allows: the search's default. The named parameter
+  `vector_instructions` chooses another, for tests and measurements: the records do not depend on it.
 */
-inline Vector_instructions vector_instructions()
+inline Vector_instructions widest_vector_instructions()
 {
-  static const Vector_instructions chosen = [] {
-    if(const char* forced = std::getenv("SIGMOID_NEIGHBORHOODS_SIMD"))
-      for(Vector_instructions v : {Vector_instructions::PORTABLE, Vector_instructions::AVX2, Vector_instructions::AVX512})
-        if(std::strcmp(forced, vector_instructions_name(v)) == 0 && has_vector_instructions(v))
-          return v;
-    return has_vector_instructions(Vector_instructions::AVX512) ? Vector_instructions::AVX512
-           : has_vector_instructions(Vector_instructions::AVX2) ? Vector_instructions::AVX2
-                                                                : Vector_instructions::PORTABLE;
-  }();
-  return chosen;
+  return has_vector_instructions(Vector_instructions::AVX512) ? Vector_instructions::AVX512
+         : has_vector_instructions(Vector_instructions::AVX2) ? Vector_instructions::AVX2
+                                                              : Vector_instructions::PORTABLE;
 }
 
 } // namespace Sigmoid_neighborhoods

@@ -9,7 +9,7 @@
 
 #include "feature_options.h"
 
-#include <CGAL/Sigmoid_neighborhoods/IO/Oriented_point_set.h>
+#include <Sigmoid_neighborhoods_readers/Oriented_point_set.h>
 
 #include <CGAL/Bbox_2.h>
 

@@ -11,7 +11,7 @@
 #include "training_rows.h"
 
 #include <CGAL/Sigmoid_neighborhoods/Classification/Ethz_forest.h>
-#include <CGAL/Sigmoid_neighborhoods/IO/estimate_oriented_normals.h>
+#include <Sigmoid_neighborhoods_readers/estimate_oriented_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 
 #include <CGAL/Real_timer.h>

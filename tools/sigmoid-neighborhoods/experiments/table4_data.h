@@ -12,7 +12,7 @@
 #include "table4_models.h"
 #include "../tool_paths.h"
 
-#include <CGAL/Sigmoid_neighborhoods/IO/read_polygon_mesh.h>
+#include <Sigmoid_neighborhoods_readers/read_polygon_mesh.h>
 #include <CGAL/Sigmoid_neighborhoods/subdivided_polyhedra.h>
 
 #include <CGAL/Surface_mesh.h>

@@ -462,9 +462,9 @@ private:
       return;
 
     if(weighted)
-      approximate_eigenvalues<true>(columns, stride, first_solved, end_solved);
+      approximate_eigenvalues<true>(m_settings.instructions, columns, stride, first_solved, end_solved);
     else
-      approximate_eigenvalues<false>(columns, stride, first_solved, end_solved);
+      approximate_eigenvalues<false>(m_settings.instructions, columns, stride, first_solved, end_solved);
 
     // Below this, the exact path's covariance, at the input's scale, nears the subnormal numbers
     // and loses the accuracy that the margins assume.
@@ -550,12 +550,13 @@ private:
 
   // The second half of approximate_shares(): columns [first, end) of the prefix sums to
   // eigenvalues, in batches of sizes k solved together (the last batch reads and writes past `end`,
-  // within the stride, where nothing is used), on the vector instructions of vector_instructions().
+  // within the stride, where nothing is used), on the vector instructions `instructions`.
   template <bool Weighted>
-  static void approximate_eigenvalues(double* columns, std::size_t stride, std::size_t first, std::size_t end)
+  static void approximate_eigenvalues(Vector_instructions instructions, double* columns, std::size_t stride,
+                                      std::size_t first, std::size_t end)
   {
 #ifdef CGAL_SIGMOID_NEIGHBORHOODS_VECTOR_DISPATCH
-    switch(vector_instructions())
+    switch(instructions)
     {
     case Vector_instructions::AVX512:
       return approximate_eigenvalues_avx512<Weighted>(columns, stride, first, end);
@@ -564,6 +565,8 @@ private:
     default:
       break;
     }
+#else
+    (void)instructions;
 #endif
     approximate_eigenvalues_of<Batch, Weighted>(columns, stride, first, end);
   }

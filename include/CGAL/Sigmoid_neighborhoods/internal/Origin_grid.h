@@ -6,7 +6,7 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_ORIGIN_GRID_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_ORIGIN_GRID_H
 
-#include <CGAL/Sigmoid_neighborhoods/IO/Input_error.h>
+#include <stdexcept>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
@@ -51,7 +51,7 @@ public:
       // as CGAL divides: a double by the float resolution
       const double fx = std::floor(points[i].x() / resolution), fy = std::floor(points[i].y() / resolution);
       if(!(std::abs(fx) < limit && std::abs(fy) < limit))
-        throw Input_error("a point " + std::to_string(i) + " lies too far from the origin for grids of " +
+        throw std::invalid_argument("a point " + std::to_string(i) + " lies too far from the origin for grids of " +
                           std::to_string(resolution) + " m");
       cell_x[i] = std::int64_t(fx);
       cell_y[i] = std::int64_t(fy);
@@ -68,7 +68,7 @@ public:
     // CGAL's grids are as dense; refuse what would not fit rather than fail allocating
     const std::uint64_t largest = 16 * std::uint64_t(n) + (std::uint64_t(1) << 24);
     if(width > largest || height > largest || width * height > largest)
-      throw Input_error("the points span " + std::to_string(width) + " x " + std::to_string(height) +
+      throw std::invalid_argument("the points span " + std::to_string(width) + " x " + std::to_string(height) +
                         " grid cells of " + std::to_string(resolution) +
                         " m, too many for their number: split the point set in tiles");
     m_width = std::size_t(width);

@@ -10,6 +10,7 @@
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
 #include <CGAL/Sigmoid_neighborhoods/Neighborhood_criterion.h>
 #include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/vector_instructions.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -29,6 +30,7 @@ struct Search_settings
   Neighborhood_criterion criterion = Neighborhood_criterion::DIMENSIONALITY;
   double angle_tolerance = DEFAULT_ANGLE_TOLERANCE;
   unsigned int threads = 0; // of a call with Parallel_tag; 0: the default
+  Vector_instructions instructions = widest_vector_instructions();
 
   // The (a, b) pairs with a <= b, a ascending then b ascending: the visiting order of SPEC §5.
   std::vector<Cosine_sigmoid> sigmoids() const
@@ -84,6 +86,10 @@ Search_settings search_settings(const NamedParameters& np)
   s.criterion = choose_parameter(get_parameter(np, internal_np::criterion), Neighborhood_criterion::DIMENSIONALITY);
   s.angle_tolerance = choose_parameter(get_parameter(np, internal_np::angle_tolerance), DEFAULT_ANGLE_TOLERANCE);
   s.threads = number_of_threads(np);
+  s.instructions = choose_parameter(get_parameter(np, internal_np::vector_instructions), widest_vector_instructions());
+  if(!has_vector_instructions(s.instructions))
+    throw std::invalid_argument(std::string("this processor cannot run the vector instructions ") +
+                                vector_instructions_name(s.instructions));
   if(!(s.k_min >= 1 && s.k_min <= s.k_max))
     throw std::invalid_argument("the neighborhood sizes must satisfy 1 <= k_min <= k_max, got k_min = " +
                                 std::to_string(s.k_min) + ", k_max = " + std::to_string(s.k_max));
