@@ -12,8 +12,8 @@ namespace Lidar_io {
 
 /*!
   \ingroup PkgLidarIo
-  the error thrown by `read_oriented_point_set()` and `read_polygon_mesh()`: its `what()` is one
-  line for a person.
+  the error thrown for a file that cannot be read (missing, truncated, damaged, a header or a chunk
+  table the library does not read): its `what()` is one line for a person.
 */
 struct Input_error : std::runtime_error
 {

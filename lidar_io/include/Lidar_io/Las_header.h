@@ -32,7 +32,7 @@ constexpr bool las_format_has_wave_packets(unsigned int point_format)
 /*!
   \ingroup PkgLidarIo
   what the public header block of a LAS or LAZ file (ASPRS LAS 1.0 to 1.4 R15) says of its point
-  records, checked by `read_las_header()`: the version and point data format are ones the package
+  records, checked by `read_las_header()`: the version and point data format are ones the library
   reads, the scales and offsets are finite and the scales not zero, and the points an uncompressed
   file announces lie within it (a LAZ file's are checked against its chunk table as they are decoded).
 */

@@ -29,7 +29,7 @@ namespace Lidar_io {
 /*!
   \ingroup PkgLidarIo
   writes a LAZ file: a LAS 1.4 file laid out by a `Las_output_layout` whose point records are
-  compressed as LASzip 3.4 compresses them, so that LASzip, PDAL, laz-perf, laz-rs and the package's
+  compressed as LASzip 3.4 compresses them, so that LASzip, PDAL, laz-perf, laz-rs and this library's
   own reader decode them. Point formats 0 to 3 take LASzip's point-wise chunked items (version 2),
   6 to 8 its layered chunked items (version 3), and the bytes after a format's fields (the extra
   bytes dimensions) are compressed too; the wave packets of formats 4, 5, 9 and 10 are refused.

@@ -19,7 +19,7 @@ namespace Lidar_io {
   \ingroup PkgLidarIo
   the public header block of the LAS or LAZ file `filename`, checked (`Las_header`). Whether the
   points are compressed is the header's to say, whatever the extension.
-  \throws Input_error when the file cannot be opened or its header is not one the package reads
+  \throws Input_error when the file cannot be opened or its header is not one the library reads
 */
 inline Las_header read_las_header(const std::string& filename) { return internal::read_las_header(filename); }
 
@@ -31,7 +31,7 @@ inline Las_header read_las_header(const std::string& filename) { return internal
   decoded from LASzip's chunks (point-wise and layered, every item version LASzip writes), `threads`
   chunks at a time in parallel (0: OpenMP's default), each record decoded exactly. The blocks come in
   order and `records` is valid during the call only. Returns the file's header.
-  \throws Input_error when the file is unreadable, its header or chunk table is not one the package
+  \throws Input_error when the file is unreadable, its header or chunk table is not one the library
   reads, or a chunk cannot be decoded (the records given before stay valid)
 */
 template <typename Sink>

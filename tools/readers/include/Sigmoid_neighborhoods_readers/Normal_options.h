@@ -18,14 +18,12 @@ namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   the number of neighbors of the normal estimation and orientation of `read_oriented_point_set()`
   for point sets without normals (the value of CGAL's normal estimation examples).
 */
 constexpr unsigned int DEFAULT_ESTIMATION_NEIGHBORS = 18;
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   where the normals of `read_oriented_point_set()` come from.
 */
 enum class Normal_source
@@ -37,7 +35,6 @@ enum class Normal_source
 };
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   how `read_oriented_point_set()` orients the normals it estimates.
 */
 enum class Normal_orientation
@@ -49,7 +46,6 @@ enum class Normal_orientation
 };
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   the name of a source on the command line and in Python: `auto`, `file`, `pca` or `jet`.
 */
 inline const char* normal_source_name(Normal_source s)
@@ -61,7 +57,6 @@ inline const char* normal_source_name(Normal_source s)
 }
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   the source named `name` (`auto`, `file`, `pca` or `jet`).
   \throws std::invalid_argument for any other name
 */
@@ -74,7 +69,6 @@ inline Normal_source normal_source_from_name(const std::string& name)
 }
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   the name of an orientation on the command line and in Python: `mst`, `viewpoint`, `up` or `none`.
 */
 inline const char* normal_orientation_name(Normal_orientation o)
@@ -86,7 +80,6 @@ inline const char* normal_orientation_name(Normal_orientation o)
 }
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   the orientation named `name` (`mst`, `viewpoint`, `up` or `none`).
   \throws std::invalid_argument for any other name
 */
@@ -100,7 +93,6 @@ inline Normal_orientation normal_orientation_from_name(const std::string& name)
 }
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   the normals of `read_oriented_point_set()`: their source, the estimation and the orientation.
 */
 struct Normal_options

@@ -19,7 +19,6 @@ namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   a point set with oriented unit normals read from a file, and how it was obtained (SPEC §1).
   Returned by `read_oriented_point_set()`; its `points` and `normals` go to
   `compute_optimal_sigmoid_neighborhoods()` with `CGAL::make_property_map()` maps over the indices

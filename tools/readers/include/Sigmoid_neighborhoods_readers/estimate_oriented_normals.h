@@ -14,7 +14,6 @@ namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   \brief estimates and orients the normals of `points` as `read_oriented_point_set()` estimates those
   of a file without normals: `estimate_normals()` (PCA, or jet fitting with `Normal_source::JET`) on
   the `options.neighbors` nearest points, oriented as `options.orientation` says, both steps on one

@@ -17,7 +17,6 @@ namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   \brief reads a mesh (OFF, PLY, OBJ, STL) or a point set (XYZ/PWN lines `x y z [nx ny nz]`,
   PLY with or without `nx ny nz`, OFF without faces, LAS and LAZ) into distinct points with
   oriented unit normals, as SPEC §1 prescribes.
@@ -62,7 +61,6 @@ SIGMOID_NEIGHBORHOODS_READERS_FUNCTION Oriented_point_set
 read_oriented_point_set(const std::string& filename, const Normal_options& options);
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   \brief `read_oriented_point_set(filename, options)` with `Normal_source::AUTO` and
   `estimation_neighbors` neighbors (0: a file without normals comes back without normals).
 */

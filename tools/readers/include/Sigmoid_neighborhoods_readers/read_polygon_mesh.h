@@ -18,7 +18,6 @@ namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   \brief reads a mesh file (OFF, PLY, OBJ, STL) into `mesh`, through the readers of
   `read_oriented_point_set()`, and makes it a polygon mesh as
   `CGAL::Polygon_mesh_processing::IO::read_polygon_mesh()` does: the soup repaired by

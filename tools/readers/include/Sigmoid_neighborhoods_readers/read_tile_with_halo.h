@@ -20,7 +20,6 @@ namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   one tile of a `Lidar_io::Tile_catalog` with its halo, as `read_tile_with_halo()` reads it.
 */
 struct Tile_with_halo
@@ -48,7 +47,6 @@ struct Tile_with_halo
 };
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   how wide `read_tile_with_halo()` starts its halo.
 */
 struct Halo_options
@@ -63,7 +61,6 @@ struct Halo_options
 
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   \brief reads all the tiles of `catalog` as one point set, in the catalog's global order (see
   `Lidar_io::Tile_catalog`): the union that `read_tile_with_halo()` reproduces one tile at a time.
 
@@ -77,7 +74,6 @@ SIGMOID_NEIGHBORHOODS_READERS_FUNCTION Oriented_point_set
 read_catalog_union(const Lidar_io::Tile_catalog& catalog, const Normal_options& options);
 
 /*!
-  \ingroup PkgSigmoidNeighborhoodsIO
   \brief reads tile `tile` of `catalog` with a halo of points of the other tiles that holds the `k`
   nearest neighbors of every point of the tile, and what their normals need, in the union: the
   records of the tile's points computed on the result equal, bit for bit, those of the same points

@@ -4,7 +4,7 @@
 // Author(s): Sigmoid_neighborhoods contributors
 //
 // The definitions of read_oriented_point_set.h: inline in the header-only build, compiled once into the
-// library CGAL::Sigmoid_neighborhoods_IO otherwise (IO/config.h).
+// library Sigmoid_neighborhoods_readers otherwise (config.h).
 
 #ifndef SIGMOID_NEIGHBORHOODS_READERS_INTERNAL_READ_ORIENTED_POINT_SET_IMPL_H
 #define SIGMOID_NEIGHBORHOODS_READERS_INTERNAL_READ_ORIENTED_POINT_SET_IMPL_H
