@@ -245,41 +245,44 @@ std::vector<Set_summary> summarize(const std::vector<Feature_set_spec>& sets, co
   return result;
 }
 
-void write_experiment(const std::string& dir, const std::vector<Feature_set_spec>& sets,
-                      const std::vector<Experiment_file>& train_files, const std::vector<Experiment_file>& test_files,
-                      const std::vector<Run_result>& runs, const Classifier_settings& base, unsigned int orders,
-                      double graphcut, const Cross_validation& cross_validation, unsigned int cv_orders)
+// What classify experiment is asked for.
+struct Experiment_options
 {
-  const Label_mapping& m = base.labels;
-  const std::size_t classes = m.names.size();
-  std::vector<Set_summary> summaries = summarize(sets, runs, train_files, test_files, classes);
-  auto spec_of = [&](const std::string& name) -> const Feature_set_spec& {
-    return *std::find_if(sets.begin(), sets.end(), [&](const Feature_set_spec& set) { return set.name == name; });
-  };
-  const Set_summary* chosen = nullptr;
-  for(Set_summary& s : summaries)
-  {
-    const auto it = cross_validation.find({s.set, s.graphcut});
-    if(it != cross_validation.end())
-      s.cross_validated_miou = it->second;
-  }
-  for(const Set_summary& s : summaries)
-    if(!std::isnan(s.cross_validated_miou) && (chosen == nullptr || s.cross_validated_miou > chosen->cross_validated_miou))
-      chosen = &s;
-  auto count_points = [](const std::vector<Experiment_file>& files) {
-    std::size_t labeled = 0;
-    for(const Experiment_file& e : files)
-      for(int t : e.file.truth)
-        labeled += t >= 0;
-    return labeled;
-  };
-  auto paths = [](const std::vector<Experiment_file>& files) {
-    std::string s;
-    for(const Experiment_file& e : files)
-      s += (s.empty() ? "" : ", ") + std::string("`") + std::filesystem::path(e.file.path).filename().string() + "`";
-    return s;
-  };
+  std::string output;
+  std::vector<std::string> train_paths, test_paths;
+  std::vector<Feature_set_spec> sets;
+  unsigned int orders = 10, cv_orders = 1;
+  double graphcut = 0.2;
+  Classifier_settings base; // the groups are each set's
+  bool choose_scales = false;
+};
 
+const Feature_set_spec& spec_of(const std::vector<Feature_set_spec>& sets, const std::string& name)
+{
+  return *std::find_if(sets.begin(), sets.end(), [&](const Feature_set_spec& set) { return set.name == name; });
+}
+
+std::size_t labeled_points(const std::vector<Experiment_file>& files)
+{
+  std::size_t labeled = 0;
+  for(const Experiment_file& e : files)
+    for(int t : e.file.truth)
+      labeled += t >= 0;
+  return labeled;
+}
+
+// The files' names, in backquotes, comma-separated.
+std::string file_names(const std::vector<Experiment_file>& files)
+{
+  std::string s;
+  for(const Experiment_file& e : files)
+    s += (s.empty() ? "" : ", ") + std::string("`") + std::filesystem::path(e.file.path).filename().string() + "`";
+  return s;
+}
+
+// runs.csv: the scores of every run.
+void write_runs_csv(const std::string& dir, const std::vector<Run_result>& runs, const Label_mapping& m)
+{
   write_file_atomically(dir + "/runs.csv", [&](std::ofstream& out) {
     out << "set,order,graphcut,overall_accuracy,mean_f1,mean_iou";
     for(const std::string& name : m.names)
@@ -289,12 +292,17 @@ void write_experiment(const std::string& dir, const std::vector<Feature_set_spec
     {
       out << r.set << ',' << r.order << ',' << (r.graphcut ? 1 : 0) << ',' << number17(r.confusion.overall_accuracy())
           << ',' << number17(r.confusion.mean_f1()) << ',' << number17(r.confusion.mean_iou());
-      for(std::size_t c = 0; c < classes; ++c)
+      for(std::size_t c = 0; c < m.names.size(); ++c)
         out << ',' << number17(r.confusion.iou(c));
       out << ',' << number_fixed(r.train_seconds, 3) << ',' << number_fixed(r.classify_seconds, 3) << '\n';
     }
   });
+}
 
+// experiment.csv: a row per set and graph-cut.
+void write_experiment_csv(const std::string& dir, const std::vector<Feature_set_spec>& sets,
+                          const std::vector<Set_summary>& summaries, const Label_mapping& m)
+{
   write_file_atomically(dir + "/experiment.csv", [&](std::ofstream& out) {
     out << "set,groups,graphcut,features,mean_iou_mean,mean_iou_min,mean_iou_max,overall_accuracy_mean,mean_f1_mean";
     for(const std::string& name : m.names)
@@ -315,10 +323,18 @@ void write_experiment(const std::string& dir, const std::vector<Feature_set_spec
       out << ',' << number_fixed(s.feature_seconds, 2) << ',' << number_fixed(s.train_seconds, 2) << ','
           << number_fixed(s.classify_seconds, 2) << ','
           << (std::isnan(s.cross_validated_miou) ? std::string() : number17(s.cross_validated_miou)) << ','
-          << (spec_of(s.set).scale_choice ? number17(spec_of(s.set).scale_choice->chosen) : std::string()) << '\n';
+          << (spec_of(sets, s.set).scale_choice ? number17(spec_of(sets, s.set).scale_choice->chosen) : std::string())
+          << '\n';
     }
   });
+}
 
+// experiment.json: the settings, the chosen set and every set's summary.
+void write_experiment_json(const Experiment_options& o, const std::vector<Experiment_file>& train_files,
+                           const std::vector<Experiment_file>& test_files, const std::vector<Set_summary>& summaries,
+                           const Set_summary* chosen)
+{
+  const Label_mapping& m = o.base.labels;
   nlohmann::json j;
   j["labels"] = m.text();
   j["train"] = nlohmann::json::array();
@@ -326,12 +342,12 @@ void write_experiment(const std::string& dir, const std::vector<Feature_set_spec
     j["train"].push_back(e.file.path);
   for(const Experiment_file& e : test_files)
     j["test"].push_back(e.file.path);
-  j["orders"] = orders;
-  j["graphcut_strength"] = graphcut;
-  j["trees"] = base.trees;
-  j["depth"] = base.depth;
-  j["normals"] = settings_json(base)["normals"];
-  j["cross_validation_orders"] = cv_orders;
+  j["orders"] = o.orders;
+  j["graphcut_strength"] = o.graphcut;
+  j["trees"] = o.base.trees;
+  j["depth"] = o.base.depth;
+  j["normals"] = settings_json(o.base)["normals"];
+  j["cross_validation_orders"] = o.cv_orders;
   if(chosen != nullptr)
     j["chosen"] = {{"set", chosen->set}, {"graphcut", chosen->graphcut}};
   for(const Set_summary& s : summaries)
@@ -343,80 +359,122 @@ void write_experiment(const std::string& dir, const std::vector<Feature_set_spec
                           {"classify_seconds_mean", s.classify_seconds}};
     if(!std::isnan(s.cross_validated_miou))
       row["cross_validated_mean_iou"] = s.cross_validated_miou;
-    if(const std::optional<Scale_choice_report>& c = spec_of(s.set).scale_choice)
+    if(const std::optional<Scale_choice_report>& c = spec_of(o.sets, s.set).scale_choice)
       row["scale_choice"] = scale_choice_json(*c);
-    for(std::size_t c = 0; c < classes; ++c)
+    for(std::size_t c = 0; c < m.names.size(); ++c)
       row["iou_mean"][m.names[c]] = s.class_iou_mean[c];
     j["sets"].push_back(row);
   }
-  write_file_atomically(dir + "/experiment.json", [&](std::ofstream& out) { out << j.dump(2) << '\n'; });
+  write_file_atomically(o.output + "/experiment.json", [&](std::ofstream& out) { out << j.dump(2) << '\n'; });
+}
 
-  write_file_atomically(dir + "/experiment.md", [&](std::ofstream& out) {
+// The table of experiment.md: a row per set and graph-cut.
+void write_set_table(std::ostream& out, const std::vector<Feature_set_spec>& sets,
+                     const std::vector<Set_summary>& summaries, const Label_mapping& m)
+{
+  out << "| set | groups | graph-cut | features | mean IoU | OA | mean F1 |";
+  for(const std::string& name : m.names)
+    out << " IoU " << name << " |";
+  out << " features + train + classify | cross-validated mean IoU |\n|---|---|---|---:|---|---:|---:|";
+  for(std::size_t c = 0; c < m.names.size(); ++c)
+    out << "---:|";
+  out << "---:|---:|\n";
+  for(const Set_summary& s : summaries)
+  {
+    const Feature_set_spec& spec = spec_of(sets, s.set);
+    std::string groups;
+    for(const std::string& g : spec.groups)
+      groups += (groups.empty() ? "" : " + ") + g;
+    if(spec.scale_choice)
+      groups += ", first scale " + number17(spec.scale_choice->chosen) + " m (chosen)";
+    out << "| " << s.set << " | " << groups << " | " << (s.graphcut ? "yes" : "no") << " | " << s.features << " | "
+        << fixed3(s.miou_mean) << " [" << fixed3(s.miou_min) << ", " << fixed3(s.miou_max) << "] | "
+        << percent(s.oa_mean) << " | " << fixed3(s.mf1_mean) << " |";
+    for(double v : s.class_iou_mean)
+      out << ' ' << fixed3(v) << " |";
+    out << ' ' << number_fixed(s.feature_seconds, 1) << " + " << number_fixed(s.train_seconds, 1) << " + "
+        << number_fixed(s.classify_seconds, 1) << " s | " << fixed3(s.cross_validated_miou) << " |\n";
+  }
+}
+
+// The table of the first scales in metres chosen with --choose-scales, when a set has one.
+void write_scale_choice_table(std::ostream& out, const std::vector<Feature_set_spec>& sets)
+{
+  bool first = true;
+  for(const Feature_set_spec& set : sets)
+    if(set.scale_choice)
+    {
+      const Scale_choice_report& c = *set.scale_choice;
+      if(first)
+      {
+        out << "\nThe first scale in metres of the sets with such scales, chosen on the training files alone "
+               "(--choose-scales, as classify train chooses it: two folds of a 4 x 4 checkerboard, at most "
+            << c.cap << " training points a class and fold; mean IoU at the files' density / trained on a copy "
+                        "thinned 4x, the worse of the two decides):\n\n| set | ";
+        for(double scale : c.ladder)
+          out << number17(scale) << " m | ";
+        out << "chosen | time |\n|---|";
+        for(std::size_t i = 0; i <= c.ladder.size() + 1; ++i)
+          out << "---:|";
+        out << '\n';
+        first = false;
+      }
+      out << "| " << set.name << " | ";
+      for(std::size_t i = 0; i < c.ladder.size(); ++i)
+        out << fixed3(c.same_density[i]) << " / " << fixed3(c.thinned[i]) << " | ";
+      out << "**" << number17(c.chosen) << " m** | " << number_fixed(c.seconds, 1) << " s |\n";
+    }
+}
+
+// experiment.md: the settings, the table of the sets, the chosen set, the chosen scales.
+void write_experiment_markdown(const Experiment_options& o, const std::vector<Experiment_file>& train_files,
+                               const std::vector<Experiment_file>& test_files,
+                               const std::vector<Set_summary>& summaries, const Set_summary* chosen)
+{
+  const Classifier_settings& base = o.base;
+  write_file_atomically(o.output + "/experiment.md", [&](std::ofstream& out) {
     out << "# Classification experiment\n\n"
         << "CGAL's ETHZ random forest (" << base.trees << " trees, depth " << base.depth << "), trained on "
-        << paths(train_files) << " (" << count_points(train_files) << " labeled points), tested on "
-        << paths(test_files) << " (" << count_points(test_files) << "); classes " << m.text()
-        << ", other codes ignored. Every set in " << orders
+        << file_names(train_files) << " (" << labeled_points(train_files) << " labeled points), tested on "
+        << file_names(test_files) << " (" << labeled_points(test_files) << "); classes " << base.labels.text()
+        << ", other codes ignored. Every set in " << o.orders
         << " feature orders (the forest depends on the order): mean IoU as mean [min, max]; the other scores are "
            "means. Graph-cut: CGAL's classify_with_graphcut, strength "
-        << number_fixed(graphcut, 2) << ", 12 neighbors. Times: features of all files, training and "
+        << number_fixed(o.graphcut, 2) << ", 12 neighbors. Times: features of all files, training and "
            "classification (one order); the features' time leaves out the reading, the normals and the "
-           "neighbor rows that every set shares (benchmark/classification_speed.sh times a whole prediction).\n\n"
-        << "| set | groups | graph-cut | features | mean IoU | OA | mean F1 |";
-    for(const std::string& name : m.names)
-      out << " IoU " << name << " |";
-    out << " features + train + classify | cross-validated mean IoU |\n|---|---|---|---:|---|---:|---:|";
-    for(std::size_t c = 0; c < classes; ++c)
-      out << "---:|";
-    out << "---:|---:|\n";
-    for(const Set_summary& s : summaries)
-    {
-      std::string groups;
-      for(const std::string& g : spec_of(s.set).groups)
-        groups += (groups.empty() ? "" : " + ") + g;
-      if(spec_of(s.set).scale_choice)
-        groups += ", first scale " + number17(spec_of(s.set).scale_choice->chosen) + " m (chosen)";
-      out << "| " << s.set << " | " << groups << " | " << (s.graphcut ? "yes" : "no") << " | " << s.features << " | "
-          << fixed3(s.miou_mean) << " [" << fixed3(s.miou_min) << ", " << fixed3(s.miou_max) << "] | "
-          << percent(s.oa_mean) << " | " << fixed3(s.mf1_mean) << " |";
-      for(double v : s.class_iou_mean)
-        out << ' ' << fixed3(v) << " |";
-      out << ' ' << number_fixed(s.feature_seconds, 1) << " + " << number_fixed(s.train_seconds, 1) << " + "
-          << number_fixed(s.classify_seconds, 1) << " s | " << fixed3(s.cross_validated_miou) << " |\n";
-    }
+           "neighbor rows that every set shares (benchmark/classification_speed.sh times a whole prediction).\n\n";
+    write_set_table(out, o.sets, summaries, base.labels);
     if(chosen != nullptr)
       out << "\nChosen on the training files alone (the best cross-validated mean IoU: each training file left out "
              "in turn, the forest trained on the others, "
-          << cv_orders << " order" << (cv_orders == 1 ? "" : "s") << "): **" << chosen->set << "**, "
+          << o.cv_orders << " order" << (o.cv_orders == 1 ? "" : "s") << "): **" << chosen->set << "**, "
           << (chosen->graphcut ? "with" : "without") << " graph-cut, which scores " << fixed3(chosen->miou_mean)
           << " [" << fixed3(chosen->miou_min) << ", " << fixed3(chosen->miou_max) << "] on the test files.\n";
-    bool first = true;
-    for(const Feature_set_spec& set : sets)
-      if(set.scale_choice)
-      {
-        const Scale_choice_report& c = *set.scale_choice;
-        if(first)
-          out << "\nThe first scale in metres of the sets with such scales, chosen on the training files alone "
-                 "(--choose-scales, as classify train chooses it: two folds of a 4 x 4 checkerboard, at most "
-              << c.cap << " training points a class and fold; mean IoU at the files' density / trained on a copy "
-                          "thinned 4x, the worse of the two decides):\n\n| set | ";
-        if(first)
-        {
-          for(double scale : c.ladder)
-            out << number17(scale) << " m | ";
-          out << "chosen | time |\n|---|";
-          for(std::size_t i = 0; i <= c.ladder.size() + 1; ++i)
-            out << "---:|";
-          out << '\n';
-          first = false;
-        }
-        out << "| " << set.name << " | ";
-        for(std::size_t i = 0; i < c.ladder.size(); ++i)
-          out << fixed3(c.same_density[i]) << " / " << fixed3(c.thinned[i]) << " | ";
-        out << "**" << number17(c.chosen) << " m** | " << number_fixed(c.seconds, 1) << " s |\n";
-      }
+    write_scale_choice_table(out, o.sets);
   });
-  std::cerr << dir << "/experiment.md: " << sets.size() << " feature sets, " << orders << " orders, "
+}
+
+void write_experiment(const Experiment_options& o, const std::vector<Experiment_file>& train_files,
+                      const std::vector<Experiment_file>& test_files, const std::vector<Run_result>& runs,
+                      const Cross_validation& cross_validation)
+{
+  const Label_mapping& m = o.base.labels;
+  std::vector<Set_summary> summaries = summarize(o.sets, runs, train_files, test_files, m.names.size());
+  const Set_summary* chosen = nullptr;
+  for(Set_summary& s : summaries)
+  {
+    const auto it = cross_validation.find({s.set, s.graphcut});
+    if(it != cross_validation.end())
+      s.cross_validated_miou = it->second;
+  }
+  for(const Set_summary& s : summaries)
+    if(!std::isnan(s.cross_validated_miou) && (chosen == nullptr || s.cross_validated_miou > chosen->cross_validated_miou))
+      chosen = &s;
+  write_runs_csv(o.output, runs, m);
+  write_experiment_csv(o.output, o.sets, summaries, m);
+  write_experiment_json(o, train_files, test_files, summaries, chosen);
+  write_experiment_markdown(o, train_files, test_files, summaries, chosen);
+  std::cerr << o.output << "/experiment.md: " << o.sets.size() << " feature sets, " << o.orders << " orders, "
             << runs.size() << " runs\n";
 }
 
@@ -472,6 +530,160 @@ bool write_experiment_figure(const std::string& dir, const std::vector<Feature_s
   return true;
 }
 
+Experiment_options read_experiment_options(const Arguments& args)
+{
+  Experiment_options o;
+  o.output = args.output();
+  if(o.output.empty() || !args.has("--train") || !args.has("--test") || !args.positional().empty())
+    throw Usage_error("classify experiment needs --train FILE,... --test FILE,... -o DIR");
+  o.train_paths = split_list(args.get("--train"), "--train");
+  o.test_paths = split_list(args.get("--test"), "--test");
+  o.sets = parse_sets(args.get("--sets", DEFAULT_EXPERIMENT_SETS));
+  o.orders = args.get_unsigned("--orders", 10);
+  o.cv_orders = args.get_unsigned("--cv-orders", 1);
+  o.graphcut = args.has("--graphcut") ? read_graphcut(args) : 0.2;
+  if(o.orders < 1)
+    throw Usage_error("--orders must be at least 1");
+  Classifier_settings& base = o.base;
+  base.labels = parse_label_mapping(args.get("--labels", DEFAULT_LABELS));
+  base.normals = classify_normal_options(args);
+  base.features = read_feature_options(args); // the groups are each set's
+  base.trees = args.get_unsigned("--trees", 25);
+  base.depth = args.get_unsigned("--depth", 20);
+  base.max_per_class = args.get_unsigned("--max-per-class", 0);
+  o.choose_scales = args.has("--choose-scales");
+  if(o.choose_scales && (args.has("--cgal-voxel") || args.has("--pyramid-cell")))
+    throw Usage_error("--choose-scales chooses --cgal-voxel and --pyramid-cell: give them or it");
+  if(o.choose_scales && std::none_of(o.sets.begin(), o.sets.end(), [&](const Feature_set_spec& set) {
+       return has_metric_scales(set_options(base.features, set));
+     }))
+    throw Usage_error("--choose-scales: no set of --sets has a group with scales in metres (cgal-metric, cgal-grid, "
+                      "pyramid, pyramid-sigmoid)");
+  return o;
+}
+
+// --choose-scales: each set with scales in metres gets the choice that classify train would make for it.
+void choose_set_scales(Experiment_options& o)
+{
+  for(Feature_set_spec& set : o.sets)
+  {
+    Classifier_settings s = o.base;
+    s.features = set_options(o.base.features, set);
+    if(!has_metric_scales(s.features))
+      continue;
+    progress(set.name + ": choosing the scales in metres");
+    set.scale_choice = choose_first_scale(o.train_paths, s);
+  }
+}
+
+// The groups of all sets, each at each of its scales once.
+std::vector<Group_at_scale> groups_of_all_sets(const std::vector<Feature_set_spec>& sets)
+{
+  std::vector<Group_at_scale> groups;
+  for(const Feature_set_spec& set : sets)
+    for(const Group_at_scale& g : groups_at_scales(set))
+      if(std::none_of(groups.begin(), groups.end(), [&](const Group_at_scale& h) { return h.key() == g.key(); }))
+        groups.push_back(g);
+  return groups;
+}
+
+// The forest of `set` in the feature order `order`, trained on `files`.
+void train_set(const Experiment_options& o, const Feature_set_spec& set, unsigned int order,
+               const std::vector<Featured_file>& files, Trained& t)
+{
+  t.settings = o.base;
+  t.settings.features = set_options(o.base.features, set);
+  t.settings.feature_order_seed = order;
+  train(files, t);
+}
+
+// Every set in every order trained on the training files and tested on the test files, without
+// and with graph-cut (--graphcut 0: without alone, with it they would be the same).
+std::vector<Run_result> run_sets(const Experiment_options& o, const std::vector<Experiment_file>& train_files,
+                                 const std::vector<Experiment_file>& test_files)
+{
+  const std::size_t graphcut_variants = o.graphcut > 0. ? 2 : 1;
+  std::vector<Run_result> runs;
+  for(const Feature_set_spec& set : o.sets)
+  {
+    std::vector<Featured_file> train_set_files, test_set;
+    for(const Experiment_file& e : train_files)
+      train_set_files.push_back(with_set(e, set));
+    for(const Experiment_file& e : test_files)
+      test_set.push_back(with_set(e, set));
+    for(unsigned int order = 1; order <= o.orders; ++order)
+    {
+      progress(set.name + ": order " + std::to_string(order) + " of " + std::to_string(o.orders));
+      Trained t;
+      train_set(o, set, order, train_set_files, t);
+      for(std::size_t variant = 0; variant < graphcut_variants; ++variant)
+      {
+        const bool with_graphcut = variant == 1;
+        Run_result r;
+        r.set = set.name;
+        r.order = order;
+        r.graphcut = with_graphcut;
+        r.confusion = Confusion(o.base.labels.names.size());
+        r.train_seconds = t.seconds;
+        for(const Featured_file& f : test_set)
+        {
+          const Prediction p = predict(f, t.settings, std::string(), &*t.forest, with_graphcut ? o.graphcut : 0.);
+          r.classify_seconds += p.seconds;
+          for(std::size_t i = 0; i < p.classes.size(); ++i)
+            r.confusion.add(f.truth[i], p.classes[i]);
+          if(order == 1 && !with_graphcut && &f == &test_set.front())
+            r.first_test_file = p.classes;
+        }
+        runs.push_back(std::move(r));
+      }
+    }
+  }
+  return runs;
+}
+
+// Leave one training file out: what the choice of a set and of the graph-cut is made on.
+Cross_validation cross_validate(const Experiment_options& o, const std::vector<Experiment_file>& train_files)
+{
+  const std::size_t graphcut_variants = o.graphcut > 0. ? 2 : 1;
+  const std::size_t classes = o.base.labels.names.size();
+  Cross_validation cross_validation;
+  if(train_files.size() < 2)
+    return cross_validation;
+  for(const Feature_set_spec& set : o.sets)
+  {
+    std::array<double, 2> sum{{0., 0.}};
+    for(unsigned int order = 1; order <= o.cv_orders; ++order)
+    {
+      std::array<Confusion, 2> pooled{{Confusion(classes), Confusion(classes)}};
+      for(std::size_t left_out = 0; left_out < train_files.size(); ++left_out)
+      {
+        progress(set.name + ": cross-validation, order " + std::to_string(order) + ", fold " +
+                 std::to_string(left_out + 1));
+        std::vector<Featured_file> others;
+        for(std::size_t f = 0; f < train_files.size(); ++f)
+          if(f != left_out)
+            others.push_back(with_set(train_files[f], set));
+        Trained t;
+        train_set(o, set, order, others, t);
+        const Featured_file held_out = with_set(train_files[left_out], set);
+        for(std::size_t with_graphcut = 0; with_graphcut < graphcut_variants; ++with_graphcut)
+        {
+          const Prediction p = predict(held_out, t.settings, std::string(), &*t.forest,
+                                       with_graphcut ? o.graphcut : 0.);
+          for(std::size_t i = 0; i < p.classes.size(); ++i)
+            pooled[with_graphcut].add(held_out.truth[i], p.classes[i]);
+        }
+      }
+      for(std::size_t g = 0; g < graphcut_variants; ++g)
+        sum[g] += pooled[g].mean_iou();
+    }
+    for(std::size_t g = 0; g < graphcut_variants; ++g)
+      if(o.cv_orders > 0)
+        cross_validation[{set.name, g == 1}] = sum[g] / double(o.cv_orders);
+  }
+  return cross_validation;
+}
+
 } // namespace
 
 int run_classify_experiment(int argc, char** argv)
@@ -483,137 +695,22 @@ int run_classify_experiment(int argc, char** argv)
                        with_normal_flags({"-h", "--help", "--choose-scales"}), NORMAL_TRIPLE_OPTIONS);
   if(print_help(args, CLASSIFY_USAGE))
     return EXIT_OK;
-  const std::string output = args.output();
-  if(output.empty() || !args.has("--train") || !args.has("--test") || !args.positional().empty())
-    throw Usage_error("classify experiment needs --train FILE,... --test FILE,... -o DIR");
-  const std::vector<std::string> train_paths = split_list(args.get("--train"), "--train");
-  const std::vector<std::string> test_paths = split_list(args.get("--test"), "--test");
-  std::vector<Feature_set_spec> sets = parse_sets(args.get("--sets", DEFAULT_EXPERIMENT_SETS));
-  const unsigned int orders = args.get_unsigned("--orders", 10);
-  const unsigned int cv_orders = args.get_unsigned("--cv-orders", 1);
-  const double graphcut = args.has("--graphcut") ? read_graphcut(args) : 0.2;
-  if(orders < 1)
-    throw Usage_error("--orders must be at least 1");
-  Classifier_settings base;
-  base.labels = parse_label_mapping(args.get("--labels", DEFAULT_LABELS));
-  base.normals = classify_normal_options(args);
-  base.features = read_feature_options(args); // the groups are each set's
-  base.trees = args.get_unsigned("--trees", 25);
-  base.depth = args.get_unsigned("--depth", 20);
-  base.max_per_class = args.get_unsigned("--max-per-class", 0);
-  const bool choose_scales = args.has("--choose-scales");
-  if(choose_scales && (args.has("--cgal-voxel") || args.has("--pyramid-cell")))
-    throw Usage_error("--choose-scales chooses --cgal-voxel and --pyramid-cell: give them or it");
-  if(choose_scales && std::none_of(sets.begin(), sets.end(), [&](const Feature_set_spec& set) {
-       return has_metric_scales(set_options(base.features, set));
-     }))
-    throw Usage_error("--choose-scales: no set of --sets has a group with scales in metres (cgal-metric, cgal-grid, "
-                      "pyramid, pyramid-sigmoid)");
-  create_output_folder(output);
-  // each set with scales in metres gets the choice that classify train would make for it
-  if(choose_scales)
-    for(Feature_set_spec& set : sets)
-    {
-      Classifier_settings s = base;
-      s.features = set_options(base.features, set);
-      if(!has_metric_scales(s.features))
-        continue;
-      progress(set.name + ": choosing the scales in metres");
-      set.scale_choice = choose_first_scale(train_paths, s);
-    }
-  std::vector<Group_at_scale> groups;
-  for(const Feature_set_spec& set : sets)
-    for(const Group_at_scale& g : groups_at_scales(set))
-      if(std::none_of(groups.begin(), groups.end(), [&](const Group_at_scale& h) { return h.key() == g.key(); }))
-        groups.push_back(g);
-
+  Experiment_options o = read_experiment_options(args);
+  create_output_folder(o.output);
+  if(o.choose_scales)
+    choose_set_scales(o);
+  const std::vector<Group_at_scale> groups = groups_of_all_sets(o.sets);
   std::vector<Experiment_file> train_files, test_files;
-  for(const std::string& path : train_paths)
-    train_files.push_back(read_experiment_file(path, base.labels, base.normals, base.features, groups));
-  for(const std::string& path : test_paths)
-    test_files.push_back(read_experiment_file(path, base.labels, base.normals, base.features, groups));
+  for(const std::string& path : o.train_paths)
+    train_files.push_back(read_experiment_file(path, o.base.labels, o.base.normals, o.base.features, groups));
+  for(const std::string& path : o.test_paths)
+    test_files.push_back(read_experiment_file(path, o.base.labels, o.base.normals, o.base.features, groups));
 
-  // --graphcut 0: the runs without graph-cut alone (with it they would be the same)
-  const std::size_t graphcut_variants = graphcut > 0. ? 2 : 1;
-  std::vector<Run_result> runs;
-  for(const Feature_set_spec& set : sets)
-  {
-    std::vector<Featured_file> train_set, test_set;
-    for(const Experiment_file& e : train_files)
-      train_set.push_back(with_set(e, set));
-    for(const Experiment_file& e : test_files)
-      test_set.push_back(with_set(e, set));
-    for(unsigned int order = 1; order <= orders; ++order)
-    {
-      progress(set.name + ": order " + std::to_string(order) + " of " + std::to_string(orders));
-      Trained t;
-      t.settings = base;
-      t.settings.features = set_options(base.features, set);
-      t.settings.feature_order_seed = order;
-      train(train_set, t);
-      for(std::size_t variant = 0; variant < graphcut_variants; ++variant)
-      {
-        const bool with_graphcut = variant == 1;
-        Run_result r;
-        r.set = set.name;
-        r.order = order;
-        r.graphcut = with_graphcut;
-        r.confusion = Confusion(base.labels.names.size());
-        r.train_seconds = t.seconds;
-        for(const Featured_file& f : test_set)
-        {
-          const Prediction p = predict(f, t.settings, std::string(), &*t.forest, with_graphcut ? graphcut : 0.);
-          r.classify_seconds += p.seconds;
-          for(std::size_t i = 0; i < p.classes.size(); ++i)
-            r.confusion.add(f.truth[i], p.classes[i]);
-          if(order == 1 && !with_graphcut && &f == &test_set.front())
-            r.first_test_file = p.classes;
-        }
-        runs.push_back(std::move(r));
-      }
-    }
-  }
-  // Leave one training file out: what the choice of a set and of the graph-cut is made on.
-  Cross_validation cross_validation;
-  if(train_files.size() >= 2)
-    for(const Feature_set_spec& set : sets)
-    {
-      std::array<double, 2> sum{{0., 0.}};
-      for(unsigned int order = 1; order <= cv_orders; ++order)
-      {
-        std::array<Confusion, 2> pooled{{Confusion(base.labels.names.size()), Confusion(base.labels.names.size())}};
-        for(std::size_t left_out = 0; left_out < train_files.size(); ++left_out)
-        {
-          progress(set.name + ": cross-validation, order " + std::to_string(order) + ", fold " +
-                   std::to_string(left_out + 1));
-          std::vector<Featured_file> others;
-          for(std::size_t f = 0; f < train_files.size(); ++f)
-            if(f != left_out)
-              others.push_back(with_set(train_files[f], set));
-          Trained t;
-          t.settings = base;
-          t.settings.features = set_options(base.features, set);
-          t.settings.feature_order_seed = order;
-          train(others, t);
-          const Featured_file held_out = with_set(train_files[left_out], set);
-          for(std::size_t with_graphcut = 0; with_graphcut < graphcut_variants; ++with_graphcut)
-          {
-            const Prediction p = predict(held_out, t.settings, std::string(), &*t.forest,
-                                         with_graphcut ? graphcut : 0.);
-            for(std::size_t i = 0; i < p.classes.size(); ++i)
-              pooled[with_graphcut].add(held_out.truth[i], p.classes[i]);
-          }
-        }
-        for(std::size_t g = 0; g < graphcut_variants; ++g)
-          sum[g] += pooled[g].mean_iou();
-      }
-      for(std::size_t g = 0; g < graphcut_variants; ++g)
-        if(cv_orders > 0)
-          cross_validation[{set.name, g == 1}] = sum[g] / double(cv_orders);
-    }
+  const std::vector<Run_result> runs = run_sets(o, train_files, test_files);
+  const Cross_validation cross_validation = cross_validate(o, train_files);
   end_progress();
-  write_experiment(output, sets, train_files, test_files, runs, base, orders, graphcut, cross_validation, cv_orders);
-  return write_experiment_figure(output, sets, test_files.front(), runs, base.labels) ? EXIT_OK : EXIT_FAILED;
+  write_experiment(o, train_files, test_files, runs, cross_validation);
+  return write_experiment_figure(o.output, o.sets, test_files.front(), runs, o.base.labels) ? EXIT_OK : EXIT_FAILED;
 }
 
 } // namespace sigmoid_tool

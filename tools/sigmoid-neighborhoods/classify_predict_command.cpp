@@ -105,6 +105,49 @@ void write_prediction_las(const std::string& path, const Las_output_points& poin
   write_las_results(path, points, file.model, r, threads);
 }
 
+// The input's points, or a tile's with a halo: the normals' neighbor rows kept for the features; a
+// tile's halo holds them and the grids' cells, and is widened until the pyramid's representatives and
+// rows and cgal-metric's neighbors near the tile are checked to be the union's.
+Input_points read_points_for_features(const Arguments& args, const Classifier_settings& settings)
+{
+  // --halo WIDTH: the pyramid's first halo too (the cells still hold)
+  double minimum_halo = cell_halo(settings.features, !args.has("--halo"));
+  Input_points in;
+  unsigned int readings = 0;
+  for(;;)
+  {
+    in = read_input_points(args, "classify predict", largest_neighborhood(settings.features), settings.normals,
+                           minimum_halo, 1);
+    readings += in.halo.readings;
+    if(!in.is_tile)
+      break;
+    const double needed = checked_halo_width_of_tile(in.model, settings.features, in.tile_extent, in.first, in.last);
+    if(needed <= in.halo.halo_width)
+      break;
+    if(readings >= 16)
+      throw Usage_error(in.source + ": no halo up to " + number_fixed(in.halo.halo_width, 1) +
+                        " holds the neighborhoods near tile " + in.tile_name);
+    progress("reading a wider halo for the neighborhoods");
+    minimum_halo = std::max(needed, 1.5 * in.halo.halo_width);
+  }
+  in.halo.readings = readings;
+  return in;
+}
+
+// The last line: the points of each class, the time of each phase.
+void report_prediction(const std::string& output, const Input_points& in, const Prediction& p,
+                       const Label_mapping& labels, const Phase_times& times)
+{
+  std::vector<std::size_t> counts(labels.names.size(), 0);
+  for(std::size_t i = in.first; i < in.last; ++i)
+    if(p.classes[i] >= 0)
+      ++counts[std::size_t(p.classes[i])];
+  std::cerr << output << ": " << in.last - in.first << " points" << halo_description(in) << ":";
+  for(std::size_t c = 0; c < counts.size(); ++c)
+    std::cerr << (c ? ", " : " ") << labels.names[c] << ' ' << counts[c];
+  std::cerr << "; " << number_fixed(times.total(), 2) << " s (" << times.text() << ")\n";
+}
+
 } // namespace
 
 int run_classify_predict(int argc, char** argv)
@@ -136,30 +179,7 @@ int run_classify_predict(int argc, char** argv)
     refuse_inexact_tile(settings, graphcut);
   Phase_times times;
   progress("reading");
-  // the normals' neighbor rows kept for the features; a tile's halo holds them and the grids' cells,
-  // and is widened until the pyramid's representatives and rows and cgal-metric's neighbors near the
-  // tile are checked to be the union's
-  // --halo WIDTH: the pyramid's first halo too (the cells still hold)
-  double minimum_halo = cell_halo(settings.features, !args.has("--halo"));
-  Input_points in;
-  unsigned int readings = 0;
-  for(;;)
-  {
-    in = read_input_points(args, "classify predict", largest_neighborhood(settings.features), settings.normals,
-                           minimum_halo, 1);
-    readings += in.halo.readings;
-    if(!in.is_tile)
-      break;
-    const double needed = checked_halo_width_of_tile(in.model, settings.features, in.tile_extent, in.first, in.last);
-    if(needed <= in.halo.halo_width)
-      break;
-    if(readings >= 16)
-      throw Usage_error(in.source + ": no halo up to " + number_fixed(in.halo.halo_width, 1) +
-                        " holds the neighborhoods near tile " + in.tile_name);
-    progress("reading a wider halo for the neighborhoods");
-    minimum_halo = std::max(needed, 1.5 * in.halo.halo_width);
-  }
-  in.halo.readings = readings;
+  Input_points in = read_points_for_features(args, settings);
   if(las_output)
     check_las_output(output, las_output_points(in));
   times.end_reading(in.model);
@@ -181,14 +201,7 @@ int run_classify_predict(int argc, char** argv)
   times.end("writing");
   write_tile_description(output, "classify predict", args, in, times, model);
   end_progress();
-  std::vector<std::size_t> counts(settings.labels.names.size(), 0);
-  for(std::size_t i = in.first; i < in.last; ++i)
-    if(p.classes[i] >= 0)
-      ++counts[std::size_t(p.classes[i])];
-  std::cerr << output << ": " << in.last - in.first << " points" << halo_description(in) << ":";
-  for(std::size_t c = 0; c < counts.size(); ++c)
-    std::cerr << (c ? ", " : " ") << settings.labels.names[c] << ' ' << counts[c];
-  std::cerr << "; " << number_fixed(times.total(), 2) << " s (" << times.text() << ")\n";
+  report_prediction(output, in, p, settings.labels, times);
   return EXIT_OK;
 }
 

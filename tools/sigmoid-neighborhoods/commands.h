@@ -11,7 +11,7 @@ namespace sigmoid_tool {
 
 int run_optimal_command(int argc, char** argv);            // optimal_command.cpp
 int run_evaluate_command(int argc, char** argv);           // evaluate_command.cpp
-int run_merge_command(int argc, char** argv);              // evaluate_command.cpp
+int run_merge_command(int argc, char** argv);              // merge_command.cpp
 int run_report_command(int argc, char** argv);             // report_command.cpp
 int run_filter_normals_command(int argc, char** argv);     // filter_command.cpp
 int run_denoise_experiment_command(int argc, char** argv); // denoise_experiment_command.cpp

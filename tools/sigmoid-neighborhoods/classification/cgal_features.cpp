@@ -100,6 +100,77 @@ void append_columns(const CGAL::Classification::Feature_set& features, std::size
   }
 }
 
+#ifdef CGAL_LINKED_WITH_TBB
+typedef CGAL::Parallel_tag Per_point_tag;
+#else
+typedef CGAL::Sequential_tag Per_point_tag;
+#endif
+
+// The scales as the generator's constructor builds them, one after the other there: the voxel of
+// scale s is the first's times 2^s, the first's CGAL's choice from its eigen analysis when not given.
+// `grid_only`: the planimetric grids alone.
+std::vector<Scale> build_scales(const Point_set& points, const Kernel::Iso_cuboid_3& bbox, unsigned int scale_count,
+                                double voxel, unsigned int threads, bool grid_only)
+{
+  std::vector<Scale> scales(std::max(1u, scale_count));
+  std::size_t first_parallel = 0;
+  if(voxel > 0.)
+    scales[0].voxel_size = float(voxel);
+  else
+  {
+    scales[0].build_neighborhood(points, true);
+    scales[0].build_eigen(points, CGAL::Sequential_tag());
+    first_parallel = 1;
+  }
+  for(std::size_t s = 1; s < scales.size(); ++s)
+    scales[s].voxel_size = scales[s - 1].voxel_size * 2;
+  if(!grid_only)
+  {
+    // the neighborhoods (a kd-tree, a voxel grid) side by side, then each scale's points on every thread
+    for_each_item(first_parallel, scales.size(), threads,
+                  [&](std::size_t s) { scales[s].build_neighborhood(points, s == 0); });
+    for(std::size_t s = first_parallel; s < scales.size(); ++s)
+      scales[s].build_eigen(points, Per_point_tag());
+  }
+  scales[0].grid = std::make_unique<Grid>(points, points.point_map(), bbox, scales[0].voxel_size);
+  for(std::size_t s = 1; s < scales.size(); ++s)
+    scales[s].grid = std::make_unique<Grid>(scales[s - 1].grid.get());
+  return scales;
+}
+
+// The features of generate_point_based_features(), in its order, computed side by side on TBB. The
+// feature set keeps references to lvalue arguments until end_parallel_additions(): the index of an
+// eigenvalue is given as a copy.
+void add_generator_features(CGAL::Classification::Feature_set& features, const Point_set& points,
+                            const Point_map& point_map, const std::vector<Scale>& scales, bool grid_only)
+{
+  using namespace CGAL::Classification::Feature;
+  features.begin_parallel_additions();
+  if(!grid_only)
+  {
+    for(unsigned int j = 0; j < 3; ++j)
+      for(std::size_t s = 0; s < scales.size(); ++s)
+        features.add_with_scale_id<Eigenvalue>(s, points, *scales[s].eigen, static_cast<unsigned int>(j));
+    for(std::size_t s = 0; s < scales.size(); ++s)
+      features.add_with_scale_id<Generator::Distance_to_plane>(s, points, point_map, *scales[s].eigen);
+  }
+  for(std::size_t s = 0; s < scales.size(); ++s)
+    features.add_with_scale_id<Generator::Dispersion>(s, points, point_map, *scales[s].grid,
+                                                      scales[s].radius_neighbors());
+  for(std::size_t s = 0; s < scales.size(); ++s)
+    features.add_with_scale_id<Generator::Elevation>(s, points, point_map, *scales[s].grid, scales[s].radius_dtm());
+  for(std::size_t s = 0; s < scales.size(); ++s)
+    features.add_with_scale_id<Generator::Height_below>(s, points, point_map, *scales[s].grid);
+  for(std::size_t s = 0; s < scales.size(); ++s)
+    features.add_with_scale_id<Generator::Height_above>(s, points, point_map, *scales[s].grid);
+  for(std::size_t s = 0; s < scales.size(); ++s)
+    features.add_with_scale_id<Generator::Vertical_range>(s, points, point_map, *scales[s].grid);
+  if(!grid_only)
+    for(std::size_t s = 0; s < scales.size(); ++s)
+      features.add_with_scale_id<Generator::Verticality>(s, points, *scales[s].eigen);
+  features.end_parallel_additions();
+}
+
 } // namespace
 
 void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scale_count, double voxel,
@@ -124,73 +195,15 @@ void append_cgal_features(const SN::Oriented_point_set& model, unsigned int scal
     append_columns(features, points.size(), 1, columns);
     return;
   }
-
-  // The scales as the generator's constructor builds them, one after the other there: the voxel of
-  // scale s is the first's times 2^s, the first's CGAL's choice from its eigen analysis when not given
 #ifdef CGAL_LINKED_WITH_TBB
-  typedef CGAL::Parallel_tag Per_point_tag;
   // --threads bounds CGAL's loops over the points, the eigen analyses' and the features'
   std::unique_ptr<tbb::global_control> limit;
   if(threads != 0)
     limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, threads);
-#else
-  typedef CGAL::Sequential_tag Per_point_tag;
 #endif
-  std::vector<Scale> scales(std::max(1u, scale_count));
-  std::size_t first_parallel = 0;
-  if(voxel > 0.)
-    scales[0].voxel_size = float(voxel);
-  else
-  {
-    scales[0].build_neighborhood(points, true);
-    scales[0].build_eigen(points, CGAL::Sequential_tag());
-    first_parallel = 1;
-  }
-  for(std::size_t s = 1; s < scales.size(); ++s)
-    scales[s].voxel_size = scales[s - 1].voxel_size * 2;
-  if(!grid_only)
-  {
-    // the neighborhoods (a kd-tree, a voxel grid) side by side, then each scale's points on every thread
-    for_each_item(first_parallel, scales.size(), threads,
-                   [&](std::size_t s) { scales[s].build_neighborhood(points, s == 0); });
-    for(std::size_t s = first_parallel; s < scales.size(); ++s)
-      scales[s].build_eigen(points, Per_point_tag());
-  }
-  scales[0].grid = std::make_unique<Grid>(points, point_map, bbox, scales[0].voxel_size);
-  for(std::size_t s = 1; s < scales.size(); ++s)
-    scales[s].grid = std::make_unique<Grid>(scales[s - 1].grid.get());
-
-  // The features of generate_point_based_features(), in its order, computed side by side on TBB. The
-  // feature set keeps references to lvalue arguments until end_parallel_additions(): the index of an
-  // eigenvalue is given as a copy.
-  using namespace CGAL::Classification::Feature;
+  const std::vector<Scale> scales = build_scales(points, bbox, scale_count, voxel, threads, grid_only);
   CGAL::Classification::Feature_set features;
-  {
-    features.begin_parallel_additions();
-    if(!grid_only)
-    {
-      for(unsigned int j = 0; j < 3; ++j)
-        for(std::size_t s = 0; s < scales.size(); ++s)
-          features.add_with_scale_id<Eigenvalue>(s, points, *scales[s].eigen, static_cast<unsigned int>(j));
-      for(std::size_t s = 0; s < scales.size(); ++s)
-        features.add_with_scale_id<Generator::Distance_to_plane>(s, points, point_map, *scales[s].eigen);
-    }
-    for(std::size_t s = 0; s < scales.size(); ++s)
-      features.add_with_scale_id<Generator::Dispersion>(s, points, point_map, *scales[s].grid,
-                                                        scales[s].radius_neighbors());
-    for(std::size_t s = 0; s < scales.size(); ++s)
-      features.add_with_scale_id<Generator::Elevation>(s, points, point_map, *scales[s].grid, scales[s].radius_dtm());
-    for(std::size_t s = 0; s < scales.size(); ++s)
-      features.add_with_scale_id<Generator::Height_below>(s, points, point_map, *scales[s].grid);
-    for(std::size_t s = 0; s < scales.size(); ++s)
-      features.add_with_scale_id<Generator::Height_above>(s, points, point_map, *scales[s].grid);
-    for(std::size_t s = 0; s < scales.size(); ++s)
-      features.add_with_scale_id<Generator::Vertical_range>(s, points, point_map, *scales[s].grid);
-    if(!grid_only)
-      for(std::size_t s = 0; s < scales.size(); ++s)
-        features.add_with_scale_id<Generator::Verticality>(s, points, *scales[s].eigen);
-    features.end_parallel_additions();
-  }
+  add_generator_features(features, points, point_map, scales, grid_only);
   append_columns(features, points.size(), threads, columns);
 }
 

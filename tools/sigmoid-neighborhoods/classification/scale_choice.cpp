@@ -238,18 +238,27 @@ Confusion cross_validated(const std::array<Training_rows, 2>& train, const std::
   return pooled;
 }
 
-// choose_first_scale() without its last step
-Scale_choice_report choose(const std::vector<std::string>& paths, const Classifier_settings& s, std::size_t cap)
+// Per file, the truth at the points a forest reads, per fold of the checkerboard.
+typedef std::array<std::vector<std::vector<int>>, 2> Truth;
+
+// The training and the test points of each fold: of the files (`train`, `test`) and of their copies
+// thinned 4x (`thinned`), whose points are `kept` of each file.
+struct Fold_truths
 {
-  CGAL::Real_timer timer;
-  timer.start();
+  Truth train, thinned, test;
+  std::vector<std::vector<std::size_t>> kept;
+};
+
+// First the files' labels and positions alone (no normals, no neighbor rows): they give the folds
+// and the points that the forests read, so that each file is then featured on its own and keeps
+// its columns at those points alone. (Reading every file with its rows first held them all at
+// once: 5.8 GB for 10 M points.)
+Fold_truths read_fold_truths(const std::vector<std::string>& paths, const Classifier_settings& s, std::size_t cap)
+{
   const std::size_t classes = s.labels.names.size();
-  // First the files' labels and positions alone (no normals, no neighbor rows): they give the folds
-  // and the points that the forests read, so that each file is then featured on its own and keeps
-  // its columns at those points alone. (Reading every file with its rows first held them all at
-  // once: 5.8 GB for 10 M points.)
   std::vector<Fold_labels> labeled(paths.size()), thinned_labeled(paths.size());
-  std::vector<std::vector<std::size_t>> kept(paths.size());
+  Fold_truths truths;
+  truths.kept.resize(paths.size());
   {
     std::vector<std::vector<SN::Oriented_point_set::Point_3>> points;
     CGAL::Bbox_2 extent;
@@ -266,105 +275,126 @@ Scale_choice_report choose(const std::vector<std::string>& paths, const Classifi
       for(const auto& p : points[i])
         labeled[i].fold.push_back(fold_of(p, extent));
       std::vector<SN::Oriented_point_set::Point_3>().swap(points[i]);
-      kept[i] = thinned_points(labeled[i].truth.size(), unsigned(i) + 1);
-      for(std::size_t p : kept[i])
+      truths.kept[i] = thinned_points(labeled[i].truth.size(), unsigned(i) + 1);
+      for(std::size_t p : truths.kept[i])
       {
         thinned_labeled[i].truth.push_back(labeled[i].truth[p]);
         thinned_labeled[i].fold.push_back(labeled[i].fold[p]);
       }
     }
   }
-  std::array<std::vector<std::vector<int>>, 2> train_truth, thinned_truth, test_truth;
   for(unsigned char fold = 0; fold < 2; ++fold)
   {
-    train_truth[fold] = training_truth(labeled, fold, classes, cap);
-    thinned_truth[fold] = training_truth(thinned_labeled, fold, classes, cap);
-    test_truth[fold] = training_truth(labeled, fold, classes, 0);
-    keep_evenly(test_truth[fold], TEST_POINTS_PER_FOLD);
+    truths.train[fold] = training_truth(labeled, fold, classes, cap);
+    truths.thinned[fold] = training_truth(thinned_labeled, fold, classes, cap);
+    truths.test[fold] = training_truth(labeled, fold, classes, 0);
+    keep_evenly(truths.test[fold], TEST_POINTS_PER_FOLD);
   }
-  std::vector<Fold_labels>().swap(labeled);
-  std::vector<Fold_labels>().swap(thinned_labeled);
-  // Each file's points that a forest reads, their truth at those points alone, and the groups that
-  // no candidate changes computed there once; then the neighbor rows, which only those groups read,
-  // are freed: the choice holds the selected points' columns, not every point's rows.
-  typedef std::array<std::vector<std::vector<int>>, 2> Truth;
+  return truths;
+}
+
+// The points of file `i` that a forest reads (`f.selected`), their truth at those points alone, and
+// the groups of `fixed` (those no candidate changes) computed there once; then the neighbor rows,
+// which only those groups read, are freed: the choice holds the selected points' columns, not every
+// point's rows.
+void select_points(Fold_file& f, std::size_t i, const std::vector<Truth*>& truths, const Feature_options& fixed)
+{
+  for(std::size_t p = 0; p < f.file.truth.size(); ++p)
+    if(std::any_of(truths.begin(), truths.end(), [&](const Truth* t) {
+         return (*t)[0][i][p] >= 0 || (*t)[1][i][p] >= 0;
+       }))
+      f.selected.push_back(p);
+  for(Truth* t : truths)
+    for(std::vector<std::vector<int>>& fold : *t)
+    {
+      std::vector<int> at_selected(f.selected.size());
+      for(std::size_t j = 0; j < f.selected.size(); ++j)
+        at_selected[j] = fold[i][f.selected[j]];
+      fold[i] = std::move(at_selected);
+    }
+  for(const Feature_group* g : groups_of(fixed))
+  {
+    Feature_options one = fixed;
+    one.groups = {g->name};
+    f.fixed_groups[g->name] = at_points(compute_feature_columns(f.file.model, one, [&](const std::string& step) {
+                                          progress(f.file.path + ": " + step);
+                                        }),
+                                        f.selected);
+  }
+  std::vector<std::uint32_t>().swap(f.file.model.neighbor_indices);
+  std::vector<std::size_t>().swap(f.file.model.neighbor_offsets);
+}
+
+// Each file featured, and its copy thinned 4x, at their selected points (select_points()).
+void read_fold_files(const std::vector<std::string>& paths, const Classifier_settings& s, Fold_truths& truths,
+                     std::vector<Fold_file>& files, std::vector<Fold_file>& thinned)
+{
   Feature_options fixed = s.features;
   fixed.groups.clear();
   for(const Feature_group* g : groups_of(s.features))
     if(!g->metric_scales)
       fixed.groups.push_back(g->name);
-  auto select = [&](Fold_file& f, std::size_t i, const std::vector<Truth*>& truths) {
-    for(std::size_t p = 0; p < f.file.truth.size(); ++p)
-      if(std::any_of(truths.begin(), truths.end(), [&](const Truth* t) {
-           return (*t)[0][i][p] >= 0 || (*t)[1][i][p] >= 0;
-         }))
-        f.selected.push_back(p);
-    for(Truth* t : truths)
-      for(std::vector<std::vector<int>>& fold : *t)
-      {
-        std::vector<int> at_selected(f.selected.size());
-        for(std::size_t j = 0; j < f.selected.size(); ++j)
-          at_selected[j] = fold[i][f.selected[j]];
-        fold[i] = std::move(at_selected);
-      }
-    for(const Feature_group* g : groups_of(fixed))
-    {
-      Feature_options one = fixed;
-      one.groups = {g->name};
-      f.fixed_groups[g->name] = at_points(compute_feature_columns(f.file.model, one, [&](const std::string& step) {
-                                            progress(f.file.path + ": " + step);
-                                          }),
-                                          f.selected);
-    }
-    std::vector<std::uint32_t>().swap(f.file.model.neighbor_indices);
-    std::vector<std::size_t>().swap(f.file.model.neighbor_offsets);
-  };
-  std::vector<Fold_file> files, thinned;
   for(std::size_t i = 0; i < paths.size(); ++i)
   {
     Fold_file f, t;
     f.file = read_and_feature(paths[i], s.labels, true, s.normals, s.features, false);
-    check_same_points(f.file, train_truth[0][i].size());
+    check_same_points(f.file, truths.train[0][i].size());
     progress(paths[i] + ": thinned 4x for the choice of scales");
-    t.file = thinned_copy(f.file, kept[i], s.labels, s.normals, s.features);
-    std::vector<std::size_t>().swap(kept[i]);
-    select(f, i, {&train_truth, &test_truth});
-    select(t, i, {&thinned_truth});
+    t.file = thinned_copy(f.file, truths.kept[i], s.labels, s.normals, s.features);
+    std::vector<std::size_t>().swap(truths.kept[i]);
+    select_points(f, i, {&truths.train, &truths.test}, fixed);
+    select_points(t, i, {&truths.thinned}, fixed);
     files.push_back(std::move(f));
     thinned.push_back(std::move(t));
   }
+}
+
+// The cross-validated mean IoU of the first scale `first`, at the files' density and trained on the
+// thinned copies, added to `report`.
+void score_first_scale(double first, const Classifier_settings& s, const std::vector<Fold_file>& files,
+                       const std::vector<Fold_file>& thinned, const Fold_truths& truths, Scale_choice_report& report)
+{
+  const Feature_options o = with_first_scale(s.features, first);
+  std::array<Training_rows, 2> train, test, thin;
+  std::vector<std::string> names;
+  // each file's features computed once, its rows appended to every set of rows that takes them
+  auto append = [&](const std::vector<Fold_file>& set, const std::vector<std::pair<const Truth*, std::array<Training_rows, 2>*>>& targets) {
+    for(std::size_t i = 0; i < set.size(); ++i)
+    {
+      const std::vector<Feature_column> columns = selected_columns(set[i], o, first);
+      if(names.empty())
+        names = column_names(columns);
+      for(const auto& target : targets)
+        for(std::size_t fold = 0; fold < 2; ++fold)
+          append_training_rows(columns, (*target.first)[fold][i], names, o.threads, (*target.second)[fold]);
+    }
+  };
+  append(files, {{&truths.train, &train}, {&truths.test, &test}});
+  append(thinned, {{&truths.thinned, &thin}});
+  for(std::size_t fold = 0; fold < 2; ++fold)
+    if(train[fold].labels.empty() || thin[fold].labels.empty() || test[fold].labels.empty())
+      throw Scale_choice_impossible("too few labeled points to choose the scales in metres (a fold of the "
+                                    "checkerboard is empty): give --cgal-voxel and --pyramid-cell");
+  report.same_density.push_back(cross_validated(train, test, names.size(), s).mean_iou());
+  report.thinned.push_back(cross_validated(thin, test, names.size(), s).mean_iou());
+  report.training_points = train[0].labels.size() + train[1].labels.size();
+  report.test_points = test[0].labels.size() + test[1].labels.size();
+}
+
+// choose_first_scale() without its last step
+Scale_choice_report choose(const std::vector<std::string>& paths, const Classifier_settings& s, std::size_t cap)
+{
+  CGAL::Real_timer timer;
+  timer.start();
+  Fold_truths truths = read_fold_truths(paths, s, cap);
+  std::vector<Fold_file> files, thinned;
+  read_fold_files(paths, s, truths, files, thinned);
 
   Scale_choice_report report;
   report.ladder = scale_ladder();
   report.cap = cap;
   for(double first : report.ladder)
-  {
-    const Feature_options o = with_first_scale(s.features, first);
-    std::array<Training_rows, 2> train, test, thin;
-    std::vector<std::string> names;
-    // each file's features computed once, its rows appended to every set of rows that takes them
-    auto append = [&](const std::vector<Fold_file>& set, const std::vector<std::pair<const Truth*, std::array<Training_rows, 2>*>>& targets) {
-      for(std::size_t i = 0; i < set.size(); ++i)
-      {
-        const std::vector<Feature_column> columns = selected_columns(set[i], o, first);
-        if(names.empty())
-          names = column_names(columns);
-        for(const auto& target : targets)
-          for(std::size_t fold = 0; fold < 2; ++fold)
-            append_training_rows(columns, (*target.first)[fold][i], names, o.threads, (*target.second)[fold]);
-      }
-    };
-    append(files, {{&train_truth, &train}, {&test_truth, &test}});
-    append(thinned, {{&thinned_truth, &thin}});
-    for(std::size_t fold = 0; fold < 2; ++fold)
-      if(train[fold].labels.empty() || thin[fold].labels.empty() || test[fold].labels.empty())
-        throw Scale_choice_impossible("too few labeled points to choose the scales in metres (a fold of the "
-                                      "checkerboard is empty): give --cgal-voxel and --pyramid-cell");
-    report.same_density.push_back(cross_validated(train, test, names.size(), s).mean_iou());
-    report.thinned.push_back(cross_validated(thin, test, names.size(), s).mean_iou());
-    report.training_points = train[0].labels.size() + train[1].labels.size();
-    report.test_points = test[0].labels.size() + test[1].labels.size();
-  }
+    score_first_scale(first, s, files, thinned, truths, report);
   // the best of the worse of both densities; ties to the coarser scale
   double best = -std::numeric_limits<double>::infinity();
   for(std::size_t c = 0; c < report.ladder.size(); ++c)
