@@ -16,6 +16,7 @@
 //                            [--order hilbert|random] [--scan-order as-read|hilbert|random]
 //                            [--only a,c,d,e,f,g,h,knn]  (the others print 0 s)
 
+#include <Sigmoid_neighborhoods_readers/option_names.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Classification/Local_eigen_analysis.h>
 #include <CGAL/Classification/Point_set_neighborhood.h>
@@ -186,10 +187,10 @@ Data scan(const std::string& file)
 std::vector<SN::Optimal_sigmoid_neighborhood> plain_loop(const Data& data, unsigned int threads)
 {
   const std::size_t n = data.points.size();
-  const unsigned int k_min = SN::DEFAULT_K_MIN, k_max = SN::DEFAULT_K_MAX;
+  const unsigned int k_min = SN::defaults::K_MIN, k_max = SN::defaults::K_MAX;
   std::vector<SN::Cosine_sigmoid> sigmoids; // a ascending, then b ascending (SPEC §5)
-  for(double a : SN::default_angle_grid())
-    for(double b : SN::default_angle_grid())
+  for(double a : SN::defaults::angle_grid())
+    for(double b : SN::defaults::angle_grid())
       if(a <= b)
         sigmoids.emplace_back(a, b);
   std::vector<std::uint32_t> rows;
@@ -234,7 +235,7 @@ std::vector<SN::Optimal_sigmoid_neighborhood> plain_loop(const Data& data, unsig
                                                                                 neighborhood.begin() + k + 1),
                                                      boost::make_iterator_range(w.begin(), w.begin() + k + 1)))
                              .error;
-          if(e < r.error() - SN::TIE_TOLERANCE)
+          if(e < r.error() - 1e-12) // the tie rule of SPEC §5
           {
             r.a = sigmoid.a();
             r.b = sigmoid.b();

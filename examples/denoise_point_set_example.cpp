@@ -7,15 +7,20 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Subdivision_method_3/subdivision_masks_3.h>
+#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
+#include <CGAL/boost/graph/generators.h>
 #include <CGAL/Sigmoid_neighborhoods/denoise_point_set.h>
-#include <CGAL/Sigmoid_neighborhoods/denoising_utilities.h>
-#include <CGAL/Sigmoid_neighborhoods/subdivided_polyhedra.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_mean_neighbor_distance.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <random>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point;
@@ -23,6 +28,29 @@ typedef Kernel::Vector_3 Vector;
 typedef CGAL::Surface_mesh<Point> Mesh;
 namespace SN = CGAL::Sigmoid_neighborhoods;
 namespace PMP = CGAL::Polygon_mesh_processing;
+
+// The cube [-1, 1]^3, each face cut into 16 x 16 squares by CGAL's linear subdivision and each
+// square into two triangles: 1,538 vertices.
+void make_cube(Mesh& mesh)
+{
+  CGAL::make_hexahedron(Point(-1, -1, -1), Point(1, -1, -1), Point(1, 1, -1), Point(-1, 1, -1), Point(-1, 1, 1),
+                        Point(-1, -1, 1), Point(1, -1, 1), Point(1, 1, 1), mesh);
+  if(!PMP::is_outward_oriented(mesh))
+    PMP::reverse_face_orientations(mesh);
+  CGAL::Subdivision_method_3::PQQ(mesh, CGAL::Linear_mask_3<Mesh>(&mesh, get(CGAL::vertex_point, mesh)),
+                                  CGAL::parameters::number_of_iterations(4));
+  PMP::triangulate_faces(mesh);
+}
+
+// Gaussian noise along the unit normals: p <- p + e n, e ~ N(0, sd^2), one draw per vertex in order.
+template <typename NormalMap>
+void add_normal_noise(Mesh& mesh, const NormalMap& normals, double sd)
+{
+  std::mt19937_64 engine(1);
+  std::normal_distribution<double> offset(0., sd);
+  for(Mesh::Vertex_index v : mesh.vertices())
+    mesh.point(v) = mesh.point(v) + offset(engine) * normals[v];
+}
 
 // The distance of p to the surface of the cube [-1, 1]^3.
 double cube_distance(const Point& p)
@@ -46,15 +74,14 @@ double mean_distance(const Mesh& mesh)
 int main(int argc, char** argv)
 {
   Mesh mesh;
-  SN::make_subdivided_cube(18, mesh); // 1,946 vertices on [-1, 1]^3
+  make_cube(mesh);
   auto normals = mesh.add_property_map<Mesh::Vertex_index, Vector>("v:normal").first;
   PMP::compute_vertex_normals(mesh, normals);
 
   // Gaussian noise along the normals, sd = 0.3 l (l: mean distance to the 6 nearest neighbors).
-  auto vertices = mesh.vertices();
   const double l = SN::compute_mean_neighbor_distance<SN::Parallel_if_available_tag>(
-    vertices, 6, CGAL::parameters::point_map(mesh.points()));
-  SN::add_normal_noise(vertices, 0.3 * l, 1, CGAL::parameters::point_map(mesh.points()).normal_map(normals));
+    mesh.vertices(), 6, CGAL::parameters::point_map(mesh.points()));
+  add_normal_noise(mesh, normals, 0.3 * l);
   const double before = mean_distance(mesh);
   const std::size_t faces = mesh.number_of_faces();
 

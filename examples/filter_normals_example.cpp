@@ -7,31 +7,59 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
-#include <CGAL/Sigmoid_neighborhoods/denoising_utilities.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Subdivision_method_3/subdivision_masks_3.h>
+#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
+#include <CGAL/boost/graph/generators.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_mean_neighbor_distance.h>
 #include <CGAL/Sigmoid_neighborhoods/filter_normals.h>
-#include <CGAL/Sigmoid_neighborhoods/subdivided_polyhedra.h>
 
 #include <cstdlib>
 #include <iostream>
+#include <random>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point;
 typedef Kernel::Vector_3 Vector;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 namespace SN = CGAL::Sigmoid_neighborhoods;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
+// The cube [-1, 1]^3, each face cut into 16 x 16 squares by CGAL's linear subdivision and each
+// square into two triangles: 1,538 vertices.
+void make_cube(Mesh& mesh)
+{
+  CGAL::make_hexahedron(Point(-1, -1, -1), Point(1, -1, -1), Point(1, 1, -1), Point(-1, 1, -1), Point(-1, 1, 1),
+                        Point(-1, -1, 1), Point(1, -1, 1), Point(1, 1, 1), mesh);
+  if(!PMP::is_outward_oriented(mesh))
+    PMP::reverse_face_orientations(mesh);
+  CGAL::Subdivision_method_3::PQQ(mesh, CGAL::Linear_mask_3<Mesh>(&mesh, get(CGAL::vertex_point, mesh)),
+                                  CGAL::parameters::number_of_iterations(4));
+  PMP::triangulate_faces(mesh);
+}
+
+// Gaussian noise along the unit normals: p <- p + e n, e ~ N(0, sd^2), one draw per vertex in order.
+template <typename NormalMap>
+void add_normal_noise(Mesh& mesh, const NormalMap& normals, double sd)
+{
+  std::mt19937_64 engine(1);
+  std::normal_distribution<double> offset(0., sd);
+  for(Mesh::Vertex_index v : mesh.vertices())
+    mesh.point(v) = mesh.point(v) + offset(engine) * normals[v];
+}
+
 int main()
 {
   Mesh mesh;
-  SN::make_subdivided_cube(18, mesh); // 1,946 vertices on [-1, 1]^3
+  make_cube(mesh);
   auto truth = mesh.add_property_map<Mesh::Vertex_index, Vector>("v:truth").first;
   PMP::compute_vertex_normals(mesh, truth);
 
   // Gaussian noise along the normals, sd = 0.3 l (l: mean distance to the 6 nearest neighbors).
-  auto vertices = mesh.vertices();
   const double l = SN::compute_mean_neighbor_distance<SN::Parallel_if_available_tag>(
-    vertices, 6, CGAL::parameters::point_map(mesh.points()));
-  SN::add_normal_noise(vertices, 0.3 * l, 1, CGAL::parameters::point_map(mesh.points()).normal_map(truth));
+    mesh.vertices(), 6, CGAL::parameters::point_map(mesh.points()));
+  add_normal_noise(mesh, truth, 0.3 * l);
   auto noisy = mesh.add_property_map<Mesh::Vertex_index, Vector>("v:noisy").first;
   PMP::compute_vertex_normals(mesh, noisy);
 
@@ -48,14 +76,11 @@ int main()
     SNP::adaptive_neighborhood_size(true, SNP::normal_cut_off(0.95, SNP::eigenvalue_threshold(0.3)))
       .number_of_iterations(150).vertex_normal_map(noisy));
 
-  auto mse = [&](const auto& normals) {
-    std::vector<Vector> a, b;
+  auto mse = [&](const auto& normals) { // the mean of |n - n_truth|^2
+    double sum = 0.;
     for(auto v : mesh.vertices())
-    {
-      a.push_back(truth[v]);
-      b.push_back(normals[v]);
-    }
-    return SN::normal_mse(a, b);
+      sum += (normals[v] - truth[v]).squared_length();
+    return sum / double(mesh.number_of_vertices());
   };
   const double noise = mse(noisy), by_default = mse(filtered), by_adaptive = mse(adaptive);
   std::cout << summary.points << " points, mean neighborhood " << summary.mean_neighbors << ", mean adaptive k "

@@ -40,11 +40,12 @@ int main(int argc, char** argv)
   SN::compute_sigmoid_features<SN::Parallel_if_available_tag>(mesh, SN::Cosine_sigmoid(threshold, threshold), 12,
                                                                cut_off);
 
+  const char* const names[] = {"linear", "planar", "scattered", "degenerate"}; // the order of SN::Dimensionality
   std::map<std::string, std::size_t> labels;
   std::size_t cut_off_failures = 0;
   for(Mesh::Vertex_index v : mesh.vertices())
   {
-    ++labels[SN::dimensionality_name(optimal[v].features.label)];
+    ++labels[names[int(optimal[v].features.label)]];
     cut_off_failures += cut_off[v].is_degenerate();
   }
   std::cout << summary.points << " points from " << summary.vertices << " vertices ("

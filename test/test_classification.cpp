@@ -212,7 +212,7 @@ TEST_CASE("optimal point features are those of the search's optimum, for both cr
     {
       std::vector<SN::Optimal_sigmoid_neighborhood> records;
       std::vector<SN::Point_features> features;
-      const auto grid = equal_only ? pi : SN::default_angle_grid();
+      const auto grid = equal_only ? pi : SN::defaults::angle_grid();
       const auto np = SNP::criterion(criterion, SNP::a_grid(grid, SNP::b_grid(grid))).point_map(Point_map())
                         .normal_map(Normal_map());
       SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(points, std::back_inserter(records), np);

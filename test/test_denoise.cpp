@@ -5,9 +5,10 @@
 // cube corner), its invariants, the overloads and bad inputs.
 
 #include <CGAL/Sigmoid_neighborhoods/denoise_point_set.h>
-#include <CGAL/Sigmoid_neighborhoods/denoising_utilities.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_mean_neighbor_distance.h>
+#include "experiments/normal_noise.h"
 #include <CGAL/Sigmoid_neighborhoods/Point_set_3.h>
-#include <CGAL/Sigmoid_neighborhoods/subdivided_polyhedra.h>
+#include "experiments/subdivided_polyhedra.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -126,7 +127,7 @@ TEST_CASE("denoise: a noisy plane becomes flat, moving along the normal only", "
   CHECK(s.noise_estimate < 1.2 * sigma);
   // On a plane the points converge: they never move by more than the noise, and all iterations run.
   CHECK_FALSE(s.stopped_at_noise_level);
-  CHECK(s.iterations == SN::DEFAULT_FILTER_ITERATIONS);
+  CHECK(s.iterations == SN::defaults::FILTER_ITERATIONS);
   CHECK(rms_z(points) < 0.2 * before);
   double tangential = 0.;
   for(std::size_t i = 0; i < points.size(); ++i)
@@ -134,7 +135,7 @@ TEST_CASE("denoise: a noisy plane becomes flat, moving along the normal only", "
                                           std::abs(points[i].first.y() - input[i].first.y()));
   CHECK(tangential < 1e-9);
   CHECK(s.largest_displacement < s.maximum_deviation);
-  CHECK(s.maximum_deviation == Approx(SN::DEVIATION_SCALE_FACTOR * s.scale));
+  CHECK(s.maximum_deviation == Approx(SN::internal::DEVIATION_SCALE_FACTOR * s.scale));
   CHECK(s.planar + s.edges + s.corners + s.unclassified == points.size());
   CHECK(s.planar > 800);
   for(const auto& p : points)
@@ -157,8 +158,8 @@ TEST_CASE("denoise: on a sphere the iterations stop at the noise level", "[denoi
   CHECK(s.noise_estimate > 0.8 * sigma);
   CHECK(s.noise_estimate < 1.3 * sigma);
   REQUIRE(s.stopped_at_noise_level);
-  CHECK(s.iterations < SN::DEFAULT_FILTER_ITERATIONS);
-  CHECK(rms_displacement >= SN::DISCREPANCY_FACTOR * s.noise_estimate);
+  CHECK(s.iterations < SN::defaults::FILTER_ITERATIONS);
+  CHECK(rms_displacement >= SN::internal::DISCREPANCY_FACTOR * s.noise_estimate);
   // One iteration less has not reached it.
   Points fewer = input;
   SN::denoise_point_set<CGAL::Sequential_tag>(
@@ -168,11 +169,11 @@ TEST_CASE("denoise: on a sphere the iterations stop at the noise level", "[denoi
   squares = 0.;
   for(std::size_t i = 0; i < points.size(); ++i)
     squares += CGAL::squared_distance(fewer[i].first, input[i].first);
-  CHECK(std::sqrt(squares / double(n)) < SN::DISCREPANCY_FACTOR * s.noise_estimate);
+  CHECK(std::sqrt(squares / double(n)) < SN::internal::DISCREPANCY_FACTOR * s.noise_estimate);
   // Without the rule all iterations run.
   Points all = input;
   const auto s_all = SN::denoise_point_set<CGAL::Sequential_tag>(all, SNP::stop_at_noise_level(false, maps()));
-  CHECK(s_all.iterations == SN::DEFAULT_FILTER_ITERATIONS);
+  CHECK(s_all.iterations == SN::defaults::FILTER_ITERATIONS);
   CHECK_FALSE(s_all.stopped_at_noise_level);
   CHECK(s_all.noise_estimate == 0.);
 }
@@ -205,7 +206,7 @@ TEST_CASE("denoise: the rank test keeps a point where the planes do not constrai
   }
   a(0, 0) = 1e-14; // what rounding leaves: the literal inverse would move x by 1e14 times nothing
   bool deficient = false;
-  const Eigen::Vector3d x = SN::internal::qem_offset(a, b + Eigen::Vector3d(1e-3, 0, 0), SN::DEFAULT_RANK_THRESHOLD,
+  const Eigen::Vector3d x = SN::internal::qem_offset(a, b + Eigen::Vector3d(1e-3, 0, 0), SN::defaults::RANK_THRESHOLD,
                                                      deficient);
   CHECK(deficient);
   CHECK(x[0] == 0.);

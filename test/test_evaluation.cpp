@@ -7,7 +7,7 @@
 #include "test_models.h"
 
 #include <CGAL/Sigmoid_neighborhoods.h>
-#include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>
+#include "evaluation_statistics.h"
 #include <CGAL/IO/OFF.h>
 #include <CGAL/property_map.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -125,8 +125,8 @@ TEST_CASE("evaluation: per-point optimum equals compute_optimal_sigmoid_neighbor
     {
       // a cube edge: a* = b* = 0, both at the bottom of Table 3; the cut-off keeps the edge, E = 0
       ++edges;
-      CHECK(e.a_lowering == SN::Lowering::AT_BOTTOM);
-      CHECK(e.b_lowering == SN::Lowering::AT_BOTTOM);
+      CHECK(e.a_lowering == SN::Point_evaluation::Lowering::AT_BOTTOM);
+      CHECK(e.b_lowering == SN::Point_evaluation::Lowering::AT_BOTTOM);
       CHECK(e.error_cut_off == Approx(0.).margin(1e-12));
       CHECK(e.cut_off_label == SN::Dimensionality::LINEAR);
     }
@@ -147,7 +147,7 @@ TEST_CASE("evaluation: statistics of two halves merge into the whole", "[evaluat
     points, std::back_inserter(evaluations),
     CGAL::parameters::point_map(CGAL::First_of_pair_property_map<Point_with_normal>())
       .normal_map(CGAL::Second_of_pair_property_map<Point_with_normal>()));
-  const auto grid = SN::default_angle_grid();
+  const auto grid = SN::defaults::angle_grid();
   SN::Evaluation_statistics whole(6, 20, grid, grid), first(6, 20, grid, grid), second(6, 20, grid, grid);
   for(std::size_t i = 0; i < evaluations.size(); ++i)
   {

@@ -5,8 +5,9 @@
 // cube and octahedron, on analytic cases.
 
 #include <CGAL/Sigmoid_neighborhoods/filter_normals.h>
-#include <CGAL/Sigmoid_neighborhoods/denoising_utilities.h>
-#include <CGAL/Sigmoid_neighborhoods/subdivided_polyhedra.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_mean_neighbor_distance.h>
+#include "experiments/normal_noise.h"
+#include "experiments/subdivided_polyhedra.h"
 #include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/orient_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
@@ -150,7 +151,7 @@ TEST_CASE("filter: a plane with noisy normals converges to the plane normal", "[
   }
   CHECK(worst < 0.01); // the noise was up to 0.25 rad; what is left is the sample's mean tilt
   CHECK(SN::normal_mse(std::vector<Vector>(points.size(), Vector(0, 0, 1)), normals_of(points)) < before / 100.);
-  CHECK(summary.iterations == SN::DEFAULT_FILTER_ITERATIONS);
+  CHECK(summary.iterations == SN::defaults::FILTER_ITERATIONS);
   CHECK(summary.points == 400);
   // m = mean 12-NN distance of a unit grid: the radius 5 m holds far more than 12 neighbors.
   CHECK(summary.radius > 5.);

@@ -37,7 +37,7 @@ namespace {
 
 bool same_record(const SN::Point_features& x, const SN::Point_features& y)
 {
-  for(std::size_t f = 0; f < SN::NUMBER_OF_POINT_FEATURES; ++f)
+  for(std::size_t f = 0; f < SN::internal::NUMBER_OF_POINT_FEATURES; ++f)
     if(!same_bits(x.value(SN::Point_feature(f)), y.value(SN::Point_feature(f))))
       return false;
   return true;

@@ -6,6 +6,7 @@
 
 #include "test_models.h"
 
+#include <Sigmoid_neighborhoods_readers/option_names.h>
 #include <CGAL/Sigmoid_neighborhoods.h>
 #include <Sigmoid_neighborhoods_readers/Normal_options.h>
 #include <CGAL/Sigmoid_neighborhoods/Normal_estimation_method.h>
@@ -117,7 +118,7 @@ plain_optimal(const Point_list& points, std::size_t i, SN::Barycenter bary,
 {
   SN::Optimal_sigmoid_neighborhood best;
   best.criterion = criterion;
-  const auto grid = SN::default_angle_grid();
+  const auto grid = SN::defaults::angle_grid();
   for(double a : grid)
     for(double b : grid)
     {
@@ -352,13 +353,13 @@ TEST_CASE("vector instructions: every path the processor has gives the portable 
 TEST_CASE("eigenentropy: analytic values, scale invariance, no additive constant", "[features][criterion]")
 {
   // a line, a plane with equal spread, an isotropic volume
-  CHECK(SN::eigenentropy(1., 0., 0.) == 0.);
-  CHECK(SN::eigenentropy(2., 2., 0.) == Approx(std::log(2.)).epsilon(1e-15));
-  CHECK(SN::eigenentropy(3., 3., 3.) == Approx(std::log(3.)).epsilon(1e-15));
+  CHECK(SN::internal::eigenentropy(1., 0., 0.) == 0.);
+  CHECK(SN::internal::eigenentropy(2., 2., 0.) == Approx(std::log(2.)).epsilon(1e-15));
+  CHECK(SN::internal::eigenentropy(3., 3., 3.) == Approx(std::log(3.)).epsilon(1e-15));
   // e = (1/2, 1/4, 1/4): 1/2 ln 2 + 2 (1/4 ln 4) = 1.5 ln 2
-  CHECK(SN::eigenentropy(2., 1., 1.) == Approx(1.5 * std::log(2.)).epsilon(1e-15));
+  CHECK(SN::internal::eigenentropy(2., 1., 1.) == Approx(1.5 * std::log(2.)).epsilon(1e-15));
   // the same shape at any scale (pgeof's + 1e-3 would make the tiny one nearly isotropic)
-  CHECK(SN::eigenentropy(2e-8, 1e-8, 1e-8) == Approx(1.5 * std::log(2.)).epsilon(1e-14));
+  CHECK(SN::internal::eigenentropy(2e-8, 1e-8, 1e-8) == Approx(1.5 * std::log(2.)).epsilon(1e-14));
   const SN::Dimensionality_features f = SN::dimensionality_features_from_eigenvalues(4., 1., 0.);
   CHECK(f.eigenentropy == Approx(-(0.8 * std::log(0.8) + 0.2 * std::log(0.2))).epsilon(1e-15));
   CHECK(SN::criterion_value(f, SN::Neighborhood_criterion::EIGENENTROPY) == f.eigenentropy);
@@ -614,7 +615,7 @@ TEST_CASE("named parameters: explicit defaults equal the defaults, grids and siz
   std::vector<SN::Optimal_sigmoid_neighborhood> explicit_defaults, narrow;
   SN::compute_optimal_sigmoid_neighborhoods<CGAL::Sequential_tag>(
     points, std::back_inserter(explicit_defaults),
-    SNP::k_min(6u, SNP::k_max(20u, SNP::a_grid(SN::default_angle_grid(), SNP::b_grid(SN::default_angle_grid(),
+    SNP::k_min(6u, SNP::k_max(20u, SNP::a_grid(SN::defaults::angle_grid(), SNP::b_grid(SN::defaults::angle_grid(),
       SNP::angle_tolerance(1e-6, SNP::barycenter(SN::Barycenter::WEIGHTED)))))).point_map(Point_map()).normal_map(Normal_map()));
   for(std::size_t i = 0; i < points.size(); ++i)
     CHECK(same_record(defaults[i], explicit_defaults[i]));

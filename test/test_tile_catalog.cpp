@@ -272,8 +272,8 @@ TEST_CASE("Tile catalog: the six IGN LiDAR HD tiles, with and without halos", "[
 
   SN::Normal_options up;
   up.orientation = SN::Normal_orientation::UPWARD;
-  const Union_records u = union_records(catalog, up, SN::DEFAULT_K_MAX);
-  check_tiles_equal_union(catalog, up, SN::DEFAULT_K_MAX, u);
+  const Union_records u = union_records(catalog, up, SN::defaults::K_MAX);
+  check_tiles_equal_union(catalog, up, SN::defaults::K_MAX, u);
 
   // Without halos, each file alone, as one gets it without a catalog: the points near the seams
   // get other neighborhoods. Matched by position (a seam's copy in the later tile has the record of
@@ -287,9 +287,9 @@ TEST_CASE("Tile catalog: the six IGN LiDAR HD tiles, with and without halos", "[
   for(const Lidar_io::Catalog_tile& t : catalog.tiles)
   {
     SN::Normal_options alone = up;
-    alone.kept_neighbors = SN::DEFAULT_K_MAX;
+    alone.kept_neighbors = SN::defaults::K_MAX;
     const SN::Oriented_point_set s = SN::read_oriented_point_set(t.path, alone);
-    const auto records = optimal_records(s, SN::DEFAULT_K_MAX);
+    const auto records = optimal_records(s, SN::defaults::K_MAX);
     for(std::size_t i = 0; i < s.points.size(); ++i)
     {
       const std::size_t u = union_index.at(position_bits(s.points[i]));

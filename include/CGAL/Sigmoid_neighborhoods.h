@@ -11,7 +11,7 @@
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 #include <CGAL/Sigmoid_neighborhoods/vector_instructions.h>
-#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/defaults.h>
 #include <CGAL/Sigmoid_neighborhoods/Mesh_points_summary.h>
 #include <CGAL/Sigmoid_neighborhoods/Point_evaluation.h>
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
@@ -32,10 +32,8 @@
 #include <CGAL/Sigmoid_neighborhoods/compute_pyramid_features.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/evaluate_sigmoid_neighborhoods.h>
-#include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>
 #include <CGAL/Sigmoid_neighborhoods/filter_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/denoise_point_set.h>
-#include <CGAL/Sigmoid_neighborhoods/denoising_utilities.h>
-#include <CGAL/Sigmoid_neighborhoods/subdivided_polyhedra.h>
+#include <CGAL/Sigmoid_neighborhoods/compute_mean_neighbor_distance.h>
 
 #endif // CGAL_SIGMOID_NEIGHBORHOODS_H

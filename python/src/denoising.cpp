@@ -165,9 +165,9 @@ void bind_denoising(py::module_& m)
 {
   using namespace pybind11::literals;
   m.def("filter_normals", &filter_normals, "points"_a, "normals"_a, py::kw_only(),
-        "iterations"_a = SN::DEFAULT_FILTER_ITERATIONS, "cut_off"_a = SN::DEFAULT_NORMAL_CUT_OFF,
-        "eigenvalue_threshold"_a = SN::DEFAULT_EIGENVALUE_THRESHOLD, "damping"_a = SN::DEFAULT_DAMPING_FACTOR,
-        "radius"_a = py::none(), "adaptive"_a = false, "size_range"_a = SN::DEFAULT_NEIGHBORHOOD_SIZE_RANGE,
+        "iterations"_a = SN::defaults::FILTER_ITERATIONS, "cut_off"_a = SN::defaults::NORMAL_CUT_OFF,
+        "eigenvalue_threshold"_a = SN::defaults::EIGENVALUE_THRESHOLD, "damping"_a = SN::defaults::DAMPING_FACTOR,
+        "radius"_a = py::none(), "adaptive"_a = false, "size_range"_a = SN::defaults::NEIGHBORHOOD_SIZE_RANGE,
         "line_angles"_a = false, "neighbors"_a = py::none(), "threads"_a = py::none(),
         R"doc(filter_normals(points, normals, *, iterations=50, cut_off=0.9, eigenvalue_threshold=0.25, damping=3.0, radius=None, adaptive=False, size_range=10, line_angles=False, neighbors=None, threads=None) -> (normals, summary)
 
@@ -200,12 +200,12 @@ normals : new (n, 3) float64 array of unit normals
 summary : dict: points, iterations, radius, mean_neighbors, empty_cones, fallbacks, mean_selected_size
 )doc");
 
-  m.def("denoise", &denoise, "points"_a, "normals"_a, py::kw_only(), "iterations"_a = SN::DEFAULT_FILTER_ITERATIONS,
-        "cut_off"_a = SN::DEFAULT_NORMAL_CUT_OFF, "eigenvalue_threshold"_a = SN::DEFAULT_EIGENVALUE_THRESHOLD,
-        "damping"_a = SN::DEFAULT_DAMPING_FACTOR, "radius"_a = py::none(), "adaptive"_a = false,
-        "size_range"_a = SN::DEFAULT_NEIGHBORHOOD_SIZE_RANGE, "step_size"_a = SN::DEFAULT_PLANAR_STEP_SIZE,
+  m.def("denoise", &denoise, "points"_a, "normals"_a, py::kw_only(), "iterations"_a = SN::defaults::FILTER_ITERATIONS,
+        "cut_off"_a = SN::defaults::NORMAL_CUT_OFF, "eigenvalue_threshold"_a = SN::defaults::EIGENVALUE_THRESHOLD,
+        "damping"_a = SN::defaults::DAMPING_FACTOR, "radius"_a = py::none(), "adaptive"_a = false,
+        "size_range"_a = SN::defaults::NEIGHBORHOOD_SIZE_RANGE, "step_size"_a = SN::defaults::PLANAR_STEP_SIZE,
         "maximum_deviation"_a = py::none(), "planar_weight_radius"_a = py::none(),
-        "rank_threshold"_a = SN::DEFAULT_RANK_THRESHOLD, "stop_at_noise_level"_a = true, "line_angles"_a = false,
+        "rank_threshold"_a = SN::defaults::RANK_THRESHOLD, "stop_at_noise_level"_a = true, "line_angles"_a = false,
         "neighbors"_a = py::none(), "threads"_a = py::none(),
         R"doc(denoise(points, normals, *, iterations=50, cut_off=0.9, eigenvalue_threshold=0.25, damping=3.0, radius=None, adaptive=False, size_range=10, step_size=0.1, maximum_deviation=None, planar_weight_radius=None, rank_threshold=0.1, stop_at_noise_level=True, line_angles=False, neighbors=None, threads=None) -> (points, normals, summary)
 

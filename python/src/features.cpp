@@ -6,10 +6,11 @@
 #include "bindings.h"
 #include "numpy_arrays.h"
 
+#include <Sigmoid_neighborhoods_readers/option_names.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_point_features.h>
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
-#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/defaults.h>
 
 #include <boost/iterator/function_output_iterator.hpp>
 
@@ -171,8 +172,8 @@ py::dict optimal(const py::object& points_object, const py::object& normals_obje
     threads_of(threads),
     CGAL::parameters::point_map(Point_rows_map{&points}).normal_map(Vector_rows_map{&normals}));
   const auto weights = SNP::line_angles(line_angles, SNP::angle_tolerance(angle_tolerance, maps));
-  const auto grid = SNP::a_grid(a_grid ? *a_grid : SN::default_angle_grid(),
-                                SNP::b_grid(b_grid ? *b_grid : SN::default_angle_grid(), weights));
+  const auto grid = SNP::a_grid(a_grid ? *a_grid : SN::defaults::angle_grid(),
+                                SNP::b_grid(b_grid ? *b_grid : SN::defaults::angle_grid(), weights));
   const auto np = SNP::k_min(
     k_min, SNP::k_max(k_max, SNP::barycenter(SN::barycenter_from_name(barycenter), SNP::criterion(minimised, grid))));
   const std::optional<Neighbor_rows> rows = neighbor_rows(neighbors, points, k_max);
@@ -217,8 +218,8 @@ void bind_features(py::module_& m)
 {
   using namespace pybind11::literals;
   m.def("features", &features, "points"_a, "normals"_a, py::kw_only(), "a"_a = CGAL_PI, "b"_a = CGAL_PI,
-        "k"_a = py::int_(SN::DEFAULT_K_MAX), "barycenter"_a = "weighted", "line_angles"_a = false,
-        "angle_tolerance"_a = SN::DEFAULT_ANGLE_TOLERANCE, "neighbors"_a = py::none(), "threads"_a = py::none(),
+        "k"_a = py::int_(SN::defaults::K_MAX), "barycenter"_a = "weighted", "line_angles"_a = false,
+        "angle_tolerance"_a = SN::defaults::ANGLE_TOLERANCE, "neighbors"_a = py::none(), "threads"_a = py::none(),
         R"doc(features(points, normals, *, a=pi, b=pi, k=20, barycenter="weighted", line_angles=False, angle_tolerance=1e-6, neighbors=None, threads=None) -> dict
 
 The features of every point's weighted neighborhood for one sigmoid (a, b) at one or several sizes k
@@ -260,9 +261,9 @@ ValueError
     non-finite normals (the message names the point), bad neighbor rows (it names the row)
 )doc");
 
-  m.def("optimal", &optimal, "points"_a, "normals"_a, py::kw_only(), "k_min"_a = SN::DEFAULT_K_MIN,
-        "k_max"_a = SN::DEFAULT_K_MAX, "a_grid"_a = py::none(), "b_grid"_a = py::none(), "barycenter"_a = "weighted",
-        "criterion"_a = "dimensionality", "line_angles"_a = false, "angle_tolerance"_a = SN::DEFAULT_ANGLE_TOLERANCE,
+  m.def("optimal", &optimal, "points"_a, "normals"_a, py::kw_only(), "k_min"_a = SN::defaults::K_MIN,
+        "k_max"_a = SN::defaults::K_MAX, "a_grid"_a = py::none(), "b_grid"_a = py::none(), "barycenter"_a = "weighted",
+        "criterion"_a = "dimensionality", "line_angles"_a = false, "angle_tolerance"_a = SN::defaults::ANGLE_TOLERANCE,
         "all_features"_a = true, "neighbors"_a = py::none(), "threads"_a = py::none(),
         R"doc(optimal(points, normals, *, k_min=6, k_max=20, a_grid=None, b_grid=None, barycenter="weighted", criterion="dimensionality", line_angles=False, angle_tolerance=1e-6, all_features=True, neighbors=None, threads=None) -> dict
 

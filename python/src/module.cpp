@@ -6,7 +6,7 @@
 #include "bindings.h"
 
 #include <Sigmoid_neighborhoods_readers/Input_error.h>
-#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/defaults.h>
 
 #include <pybind11/pybind11.h>
 
@@ -28,8 +28,8 @@ PYBIND11_MODULE(_core, m)
     "threads=None uses OpenMP's default, threads=1 one thread; results do not depend on it.\n"
     "Errors: ValueError (bad arguments or data, with the C++ message), OSError (files), MemoryError.";
   m.attr("__version__") = SIGMOID_NEIGHBORHOODS_VERSION;
-  m.attr("DEFAULT_K_MIN") = CGAL::Sigmoid_neighborhoods::DEFAULT_K_MIN;
-  m.attr("DEFAULT_K_MAX") = CGAL::Sigmoid_neighborhoods::DEFAULT_K_MAX;
+  m.attr("DEFAULT_K_MIN") = CGAL::Sigmoid_neighborhoods::defaults::K_MIN;
+  m.attr("DEFAULT_K_MAX") = CGAL::Sigmoid_neighborhoods::defaults::K_MAX;
   m.attr("LABEL_NAMES") = py::make_tuple("linear", "planar", "scattered", "degenerate");
 
   // an unusable file is an OSError, with the reader's one-line message

@@ -6,6 +6,7 @@
 #include "bindings.h"
 #include "numpy_arrays.h"
 
+#include <Sigmoid_neighborhoods_readers/option_names.h>
 #include <Lidar_io/Las_writer.h>
 #include <Lidar_io/Laz_writer.h>
 #include <Sigmoid_neighborhoods_readers/Input_error.h>

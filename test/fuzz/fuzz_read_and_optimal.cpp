@@ -97,7 +97,7 @@ struct Removed_on_exit
 void run_search(const SN::Oriented_point_set& model, const K_range& k, SN::Barycenter barycenter)
 {
   namespace SNP = SN::parameters;
-  const std::vector<double> grid = SN::default_angle_grid(); // 0, pi/6, ..., pi
+  const std::vector<double> grid = SN::defaults::angle_grid(); // 0, pi/6, ..., pi
   const std::size_t n = (std::min)(model.points.size(), MAX_SEARCH_POINTS);
   const std::vector<SN::Oriented_point_set::Point_3> points(model.points.begin(), model.points.begin() + n);
   const std::vector<SN::Oriented_point_set::Vector_3> normals(model.normals.begin(), model.normals.begin() + n);

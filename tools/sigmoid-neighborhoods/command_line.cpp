@@ -166,7 +166,7 @@ std::vector<double> read_angle_list(const Arguments& args, const std::string& na
     if(degrees)
     {
       const double step = v / 30.;
-      const std::vector<double> grid = CGAL::Sigmoid_neighborhoods::default_angle_grid();
+      const std::vector<double> grid = CGAL::Sigmoid_neighborhoods::defaults::angle_grid();
       v = step == std::floor(step) ? grid[std::size_t(step)] : v * CGAL_PI / 180.;
     }
     angles.push_back(v);

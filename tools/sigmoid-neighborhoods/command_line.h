@@ -10,7 +10,7 @@
 #include "tool_paths.h"
 
 #include <Sigmoid_neighborhoods_readers/Input_error.h>
-#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/defaults.h>
 
 #include <CGAL/number_type_config.h>
 

@@ -11,6 +11,7 @@
 #include "denoise_command.h"
 #include "experiments/denoising_comparison.h"
 #include "tool_paths.h"
+#include <CGAL/Sigmoid_neighborhoods/compute_mean_neighbor_distance.h>
 
 #include <filesystem>
 #include <iomanip>

@@ -86,9 +86,9 @@ template <typename NamedParameters>
 auto denoising_parameters(const Filter_options& f, const Arguments& args, const NamedParameters& np)
 {
   namespace SNP = SN::parameters;
-  return SNP::step_size(args.get_double("--step", SN::DEFAULT_PLANAR_STEP_SIZE),
+  return SNP::step_size(args.get_double("--step", SN::defaults::PLANAR_STEP_SIZE),
     SNP::maximum_deviation(args.get_double("--max-deviation", 0.),
-    SNP::rank_threshold(args.get_double("--rank-threshold", SN::DEFAULT_RANK_THRESHOLD),
+    SNP::rank_threshold(args.get_double("--rank-threshold", SN::defaults::RANK_THRESHOLD),
     SNP::planar_weight_radius(args.get_double("--weight-radius", 0.),
     SNP::authors_vertex_update(args.has("--authors-update"),
     SNP::stop_at_noise_level(!args.has("--no-stop"),
@@ -116,7 +116,7 @@ inline std::string denoising_summary_text(const SN::Point_set_denoising_summary&
 
 inline void check_denoising_arguments(const Arguments& args)
 {
-  const double step = args.get_double("--step", SN::DEFAULT_PLANAR_STEP_SIZE);
+  const double step = args.get_double("--step", SN::defaults::PLANAR_STEP_SIZE);
   if(!(step >= 0. && std::isfinite(step)))
     throw Usage_error("--step must be finite and >= 0");
   const double deviation = args.get_double("--max-deviation", 0.);
@@ -125,7 +125,7 @@ inline void check_denoising_arguments(const Arguments& args)
   const double weight_radius = args.get_double("--weight-radius", 0.);
   if(args.has("--weight-radius") && !(weight_radius > 0. && std::isfinite(weight_radius)))
     throw Usage_error("--weight-radius must be finite and > 0");
-  const double rank = args.get_double("--rank-threshold", SN::DEFAULT_RANK_THRESHOLD);
+  const double rank = args.get_double("--rank-threshold", SN::defaults::RANK_THRESHOLD);
   if(!(rank >= 0. && rank <= 1.))
     throw Usage_error("--rank-threshold must lie in [0, 1]");
 }

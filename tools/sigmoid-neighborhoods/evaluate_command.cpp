@@ -16,10 +16,11 @@
 #include "phase_times.h"
 #include "text_rows.h"
 
+#include <Sigmoid_neighborhoods_readers/option_names.h>
 #include <CGAL/Real_timer.h>
 #include <CGAL/Sigmoid_neighborhoods/Point_evaluation.h>
 #include <CGAL/Sigmoid_neighborhoods/evaluate_sigmoid_neighborhoods.h>
-#include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>
+#include "evaluation_statistics.h"
 
 #include <unistd.h>
 

@@ -16,7 +16,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
 #include <Sigmoid_neighborhoods_readers/Normal_options.h>
-#include <CGAL/Sigmoid_neighborhoods/evaluation_statistics.h>
+#include "evaluation_statistics.h"
 
 #include <algorithm>
 #include <cmath>
@@ -43,9 +43,9 @@ constexpr std::uint64_t LARGEST_EVALUATION_K = Arguments::LARGEST_UNSIGNED_OPTIO
 // What must be equal for two evaluations to merge.
 struct Evaluation_settings
 {
-  unsigned int k_min = SN::DEFAULT_K_MIN, k_max = SN::DEFAULT_K_MAX, fixed_k = SN::DEFAULT_K_MAX;
+  unsigned int k_min = SN::defaults::K_MIN, k_max = SN::defaults::K_MAX, fixed_k = SN::defaults::K_MAX;
   std::string barycenter = "weighted";
-  double angle_tolerance = SN::DEFAULT_ANGLE_TOLERANCE;
+  double angle_tolerance = SN::defaults::ANGLE_TOLERANCE;
   double cut_off_angle = 0.;
   std::vector<double> a_grid, b_grid;
   // the normals of files without them, and the angle of the weights (model_input.h)

@@ -29,14 +29,14 @@ namespace sigmoid_tool {
 
 struct Filter_options
 {
-  unsigned int iterations = SN::DEFAULT_FILTER_ITERATIONS;
-  double cut_off = SN::DEFAULT_NORMAL_CUT_OFF;
-  double eigenvalue_threshold = SN::DEFAULT_EIGENVALUE_THRESHOLD;
-  double damping = SN::DEFAULT_DAMPING_FACTOR;
+  unsigned int iterations = SN::defaults::FILTER_ITERATIONS;
+  double cut_off = SN::defaults::NORMAL_CUT_OFF;
+  double eigenvalue_threshold = SN::defaults::EIGENVALUE_THRESHOLD;
+  double damping = SN::defaults::DAMPING_FACTOR;
   double radius = 0.; // 0: the default 5 m
   bool adaptive = false;
-  unsigned int size_range = SN::DEFAULT_NEIGHBORHOOD_SIZE_RANGE;
-  double angle_tolerance = SN::DEFAULT_ANGLE_TOLERANCE;
+  unsigned int size_range = SN::defaults::NEIGHBORHOOD_SIZE_RANGE;
+  double angle_tolerance = SN::defaults::ANGLE_TOLERANCE;
   unsigned int threads = 0; // 0: OpenMP's default
   bool line_angles = false;
 };

@@ -6,6 +6,7 @@
 #include "model_input.h"
 
 #ifdef __GLIBC__
+#include <Sigmoid_neighborhoods_readers/option_names.h>
 #include <malloc.h>
 #endif
 

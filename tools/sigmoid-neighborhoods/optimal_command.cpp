@@ -15,6 +15,7 @@
 #include "ply_output.h"
 #include "text_rows.h"
 
+#include <Sigmoid_neighborhoods_readers/option_names.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 

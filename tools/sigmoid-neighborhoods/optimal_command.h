@@ -15,10 +15,11 @@
 #include "ply_output.h"
 #include "text_rows.h"
 
+#include <Sigmoid_neighborhoods_readers/option_names.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_optimal_sigmoid_neighborhoods.h>
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 #include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>
-#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/defaults.h>
 #include <Sigmoid_neighborhoods_readers/read_oriented_point_set.h>
 
 #include <cmath>
@@ -40,13 +41,13 @@ inline const char* GRID_USAGE =
 
 struct Search_options
 {
-  unsigned int k_min = SN::DEFAULT_K_MIN, k_max = SN::DEFAULT_K_MAX;
+  unsigned int k_min = SN::defaults::K_MIN, k_max = SN::defaults::K_MAX;
   SN::Barycenter barycenter = SN::Barycenter::WEIGHTED;
-  double angle_tolerance = SN::DEFAULT_ANGLE_TOLERANCE;
+  double angle_tolerance = SN::defaults::ANGLE_TOLERANCE;
   unsigned int threads = 0; // 0: OpenMP's default
   bool line_angles = false;
   SN::Neighborhood_criterion criterion = SN::Neighborhood_criterion::DIMENSIONALITY; // --criterion: optimal only
-  std::vector<double> a_grid = SN::default_angle_grid(), b_grid = SN::default_angle_grid();
+  std::vector<double> a_grid = SN::defaults::angle_grid(), b_grid = SN::defaults::angle_grid();
 };
 
 // The search options of --k-min, --k-max, --barycenter, --angle-tolerance, --threads, the line angles

@@ -12,7 +12,6 @@
 #include "command_line.h"
 
 #include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>
-#include <CGAL/Sigmoid_neighborhoods/Point_set_3_properties.h>
 #include <Sigmoid_neighborhoods_readers/read_oriented_point_set.h>
 
 #include <CGAL/Point_set_3.h>
@@ -31,8 +30,9 @@ typedef CGAL::Point_set_3<CGAL::Sigmoid_neighborhoods::Oriented_point_set::Point
                           CGAL::Sigmoid_neighborhoods::Oriented_point_set::Vector_3>
   Ply_point_set;
 
-// CloudCompare 2.11 writes and reads per-point values as `scalar_<name>`: the library's names.
-const std::string PLY_SCALAR_PREFIX = CGAL::Sigmoid_neighborhoods::POINT_SET_PROPERTY_PREFIX;
+// CloudCompare 2.11 writes and reads per-point values as `scalar_<name>`, as the package's
+// Point_set_3 overloads name their properties.
+const std::string PLY_SCALAR_PREFIX = "scalar_";
 
 // The property `scalar_<name>` of type T, 0 by default.
 template <typename T>

@@ -308,7 +308,7 @@ Figure3 evaluate_figure_model(const Arguments& args, const Repository_summary& f
   const std::string model_path = args.get("--figure-model");
   Search_options options = read_search_options(args);
   Evaluation_settings settings;
-  settings.a_grid = settings.b_grid = SN::default_angle_grid();
+  settings.a_grid = settings.b_grid = SN::defaults::angle_grid();
   if(first.evaluated()) // its grids too: the figure is of the evaluation's search
     settings = read_settings(Json_object(first.tree, (fs::path(first.folder) / "summary.json").string()));
   settings.cut_off_angle = std::acos(EVALUATION_CUT_OFF_COSINE);

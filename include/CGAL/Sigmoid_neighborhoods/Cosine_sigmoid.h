@@ -7,6 +7,7 @@
 #define CGAL_SIGMOID_NEIGHBORHOODS_COSINE_SIGMOID_H
 
 #include <CGAL/Sigmoid_neighborhoods/config.h>
+#include <CGAL/Sigmoid_neighborhoods/defaults.h>
 #include <CGAL/number_type_config.h>
 
 #include <algorithm>
@@ -17,13 +18,6 @@
 
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  the default angle tolerance, `1e-6` radians: angles between normals up to it count as exactly 0,
-  so that vertex normals that differ by rounding on one flat face get weight 1 (SPEC §3).
-*/
-constexpr double DEFAULT_ANGLE_TOLERANCE = 1e-6;
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
@@ -64,7 +58,7 @@ public:
     \pre `0 <= a <= b <= pi` and `0 <= angle_tolerance < pi`, checked: otherwise
     `std::invalid_argument`.
   */
-  Cosine_sigmoid(double a, double b, double angle_tolerance = DEFAULT_ANGLE_TOLERANCE)
+  Cosine_sigmoid(double a, double b, double angle_tolerance = defaults::ANGLE_TOLERANCE)
     : m_a(a), m_b(b), m_tolerance(angle_tolerance)
   {
     if(!(a >= 0. && a <= b && b <= CGAL_PI))

@@ -8,8 +8,6 @@
 
 #include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>
 
-#include <stdexcept>
-#include <string>
 
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
@@ -28,29 +26,6 @@ enum class Neighborhood_criterion
   /// what pgeof's `compute_features_optimal` and PDAL's `filters.optimalneighborhood` minimise)
   EIGENENTROPY
 };
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  the name of a criterion on the command line and in files: `dimensionality` or `eigenentropy`.
-*/
-inline const char* criterion_name(Neighborhood_criterion c)
-{
-  return c == Neighborhood_criterion::EIGENENTROPY ? "eigenentropy" : "dimensionality";
-}
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  the criterion named `name` (`dimensionality` or `eigenentropy`).
-  \throws std::invalid_argument for any other name
-*/
-inline Neighborhood_criterion criterion_from_name(const std::string& name)
-{
-  if(name == "dimensionality")
-    return Neighborhood_criterion::DIMENSIONALITY;
-  if(name == "eigenentropy")
-    return Neighborhood_criterion::EIGENENTROPY;
-  throw std::invalid_argument("unknown criterion '" + name + "': expected dimensionality or eigenentropy");
-}
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef

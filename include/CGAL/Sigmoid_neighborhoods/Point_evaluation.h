@@ -16,25 +16,22 @@ namespace Sigmoid_neighborhoods {
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsEvaluation
-  the outcome of lowering `a*` (or `b*`) to the next smaller grid value at the same `k*`:
-  the columns `a-` / `not a-` (`b-` / `not b-`) of the paper's Table 3.
-*/
-enum class Lowering
-{
-  AT_BOTTOM,  ///< `a* = 0` (column `a = 0`), or `b* = a*` (column `b = a`)
-  STILL_VALID,///< the lowered triple does not fail (`a-`, `b-`)
-  FAILS       ///< the lowered triple is degenerate (`not a-`, `not b-`)
-};
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsEvaluation
   everything the evaluation of the paper's Section 5 needs at one point: the optimal triple with
   the equal-weights baseline, the sharp cut-off `a = b = cut_off_angle` at its best `k`, equal
   weights at a fixed `k`, and the Table 3 lowering tests. Written by
-  `evaluate_sigmoid_neighborhoods()`, summed up by `Evaluation_statistics::add()`.
+  `evaluate_sigmoid_neighborhoods()`.
 */
 struct Point_evaluation
 {
+  /// the outcome of lowering `a*` (or `b*`) to the next smaller grid value at the same `k*`:
+  /// the columns `a-` / `not a-` (`b-` / `not b-`) of the paper's Table 3.
+  enum class Lowering
+  {
+    AT_BOTTOM,  ///< `a* = 0` (column `a = 0`), or `b* = a*` (column `b = a`)
+    STILL_VALID,///< the lowered triple does not fail (`a-`, `b-`)
+    FAILS       ///< the lowered triple is degenerate (`not a-`, `not b-`)
+  };
+
   Optimal_sigmoid_neighborhood optimal;                   ///< `(a*, b*, k*)` and equal weights at their best `k`
   Dimensionality equal_label = Dimensionality::DEGENERATE; ///< the label with equal weights at `k_equal`
   double error_cut_off = std::numeric_limits<double>::infinity(); ///< least `E_dim` of the cut-off over `K`

@@ -15,8 +15,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
-#include <string>
 
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
@@ -46,9 +44,11 @@ enum class Point_feature
   RADIUS               ///< the distance from the point to its `k`-th nearest neighbor
 };
 
-/// \ingroup PkgSigmoidNeighborhoodsRef
-/// the number of values of `Point_feature`.
+/// \cond SKIP_IN_MANUAL
+namespace internal {
 constexpr std::size_t NUMBER_OF_POINT_FEATURES = std::size_t(Point_feature::RADIUS) + 1;
+} // namespace internal
+/// \endcond
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
@@ -58,23 +58,10 @@ constexpr std::size_t NUMBER_OF_POINT_FEATURES = std::size_t(Point_feature::RADI
 */
 inline const char* point_feature_name(Point_feature f)
 {
-  static const char* const names[NUMBER_OF_POINT_FEATURES] = {
+  static const char* const names[internal::NUMBER_OF_POINT_FEATURES] = {
     "linearity",   "planarity", "scattering", "omnivariance", "anisotropy", "eigenentropy", "sum_of_eigenvalues",
     "change_of_curvature", "verticality", "normal_z", "error", "k", "a", "b", "radius"};
   return names[std::size_t(f)];
-}
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  the feature named `name` (see `point_feature_name()`).
-  \throws std::invalid_argument for an unknown name
-*/
-inline Point_feature point_feature_from_name(const std::string& name)
-{
-  for(std::size_t i = 0; i < NUMBER_OF_POINT_FEATURES; ++i)
-    if(name == point_feature_name(Point_feature(i)))
-      return Point_feature(i);
-  throw std::invalid_argument("unknown point feature '" + name + "'");
 }
 
 /*!

@@ -62,25 +62,25 @@ namespace Sigmoid_neighborhoods {
     \cgalParamNBegin{k_min}
       \cgalParamDescription{the smallest neighborhood size of the search, `K = {k_min, ..., k_max}`}
       \cgalParamType{`unsigned int`}
-      \cgalParamDefault{`DEFAULT_K_MIN` (6)}
+      \cgalParamDefault{`defaults::K_MIN` (6)}
       \cgalParamExtra{`1 <= k_min <= k_max`, otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{k_max}
       \cgalParamDescription{the largest neighborhood size of the search}
       \cgalParamType{`unsigned int`}
-      \cgalParamDefault{`DEFAULT_K_MAX` (20)}
+      \cgalParamDefault{`defaults::K_MAX` (20)}
       \cgalParamExtra{at least `k_max + 1` points are needed}
     \cgalParamNEnd
     \cgalParamNBegin{a_grid}
       \cgalParamDescription{the values of `a` (radians) that the search visits}
       \cgalParamType{`std::vector<double>`}
-      \cgalParamDefault{`default_angle_grid()`: `{0, pi/6, pi/3, pi/2, 2pi/3, 5pi/6, pi}`}
+      \cgalParamDefault{`defaults::angle_grid()`: `{0, pi/6, pi/3, pi/2, 2pi/3, 5pi/6, pi}`}
       \cgalParamExtra{values in `[0, pi]`, sorted and deduplicated; only pairs with `a <= b` are searched}
     \cgalParamNEnd
     \cgalParamNBegin{b_grid}
       \cgalParamDescription{the values of `b` (radians) that the search visits}
       \cgalParamType{`std::vector<double>`}
-      \cgalParamDefault{`default_angle_grid()`}
+      \cgalParamDefault{`defaults::angle_grid()`}
       \cgalParamExtra{as `a_grid`; at least one pair `a <= b` must exist}
     \cgalParamNEnd
     \cgalParamNBegin{barycenter}
@@ -96,7 +96,7 @@ namespace Sigmoid_neighborhoods {
     \cgalParamNBegin{angle_tolerance}
       \cgalParamDescription{angles between normals up to it (radians) count as 0}
       \cgalParamType{`double`}
-      \cgalParamDefault{`DEFAULT_ANGLE_TOLERANCE` (`1e-6`)}
+      \cgalParamDefault{`defaults::ANGLE_TOLERANCE` (`1e-6`)}
       \cgalParamExtra{in `[0, pi)`, otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{vector_instructions}
@@ -179,25 +179,25 @@ compute_optimal_sigmoid_neighborhoods(const PointRange& points, OutputIterator o
     \cgalParamNBegin{k_min}
       \cgalParamDescription{the smallest neighborhood size of the search, `K = {k_min, ..., k_max}`}
       \cgalParamType{`unsigned int`}
-      \cgalParamDefault{`DEFAULT_K_MIN` (6)}
+      \cgalParamDefault{`defaults::K_MIN` (6)}
       \cgalParamExtra{`1 <= k_min <= k_max`, otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{k_max}
       \cgalParamDescription{the largest neighborhood size of the search}
       \cgalParamType{`unsigned int`}
-      \cgalParamDefault{`DEFAULT_K_MAX` (20)}
+      \cgalParamDefault{`defaults::K_MAX` (20)}
       \cgalParamExtra{at least `k_max + 1` points are needed}
     \cgalParamNEnd
     \cgalParamNBegin{a_grid}
       \cgalParamDescription{the values of `a` (radians) that the search visits}
       \cgalParamType{`std::vector<double>`}
-      \cgalParamDefault{`default_angle_grid()`: `{0, pi/6, pi/3, pi/2, 2pi/3, 5pi/6, pi}`}
+      \cgalParamDefault{`defaults::angle_grid()`: `{0, pi/6, pi/3, pi/2, 2pi/3, 5pi/6, pi}`}
       \cgalParamExtra{values in `[0, pi]`, sorted and deduplicated; only pairs with `a <= b` are searched}
     \cgalParamNEnd
     \cgalParamNBegin{b_grid}
       \cgalParamDescription{the values of `b` (radians) that the search visits}
       \cgalParamType{`std::vector<double>`}
-      \cgalParamDefault{`default_angle_grid()`}
+      \cgalParamDefault{`defaults::angle_grid()`}
       \cgalParamExtra{as `a_grid`; at least one pair `a <= b` must exist}
     \cgalParamNEnd
     \cgalParamNBegin{barycenter}
@@ -213,7 +213,7 @@ compute_optimal_sigmoid_neighborhoods(const PointRange& points, OutputIterator o
     \cgalParamNBegin{angle_tolerance}
       \cgalParamDescription{angles between normals up to it (radians) count as 0}
       \cgalParamType{`double`}
-      \cgalParamDefault{`DEFAULT_ANGLE_TOLERANCE` (`1e-6`)}
+      \cgalParamDefault{`defaults::ANGLE_TOLERANCE` (`1e-6`)}
       \cgalParamExtra{in `[0, pi)`, otherwise `std::invalid_argument`}
     \cgalParamNEnd
   \cgalNamedParamsEnd

@@ -38,32 +38,20 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
-/// \ingroup PkgSigmoidNeighborhoodsDenoising
-/// The default step `alpha` of the planar rule (the authors' code): a tenth of the way to the
-/// weighted mean plane per iteration, so that the normals, filtered at the same pace, lead.
-constexpr double DEFAULT_PLANAR_STEP_SIZE = 0.1;
-/// \ingroup PkgSigmoidNeighborhoodsDenoising
-/// The default bound `epsilon` on a point's distance to its input position, in units of the scale
-/// `m` (the authors' code: `2 m`): a move beyond it is refused, so that no point wanders off.
-constexpr double DEVIATION_SCALE_FACTOR = 2.;
-/// \ingroup PkgSigmoidNeighborhoodsDenoising
-/// The default radius `r` of the planar rule's weights, in units of the scale `m` (the authors' code:
-/// `2 m`): a neighbor's distance term `exp(-4 |p_j - p_i|^2 / r^2)` falls to `exp(-4)` at two spacings,
-/// so that the rule averages over the point's own ring of neighbors, not across features.
-constexpr double PLANAR_WEIGHT_SCALE_FACTOR = 2.;
-/// \ingroup PkgSigmoidNeighborhoodsDenoising
-/// The default rank threshold of the edge and corner solves: a direction whose eigenvalue of the
-/// quadratic error metric is below this fraction of the largest is not solved for (the point keeps
-/// its coordinate along it). 0 solves every direction of non-zero eigenvalue, as the authors' code.
-constexpr double DEFAULT_RANK_THRESHOLD = 0.1;
-/// \ingroup PkgSigmoidNeighborhoodsDenoising
-/// The iterations stop once the RMS distance of the points to their input positions reaches this
-/// factor times the noise level estimated from the input (Morozov's discrepancy principle, which asks
-/// for a factor above 1: the moves are not all along the noise).
-constexpr double DISCREPANCY_FACTOR = 1.1;
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
+// The bound `epsilon` on a point's distance to its input position, in units of the scale `m` (the
+// authors' code: `2 m`): a move beyond it is refused, so that no point wanders off.
+constexpr double DEVIATION_SCALE_FACTOR = 2.;
+// The radius `r` of the planar rule's weights, in units of the scale `m` (the authors' code: `2 m`):
+// a neighbor's distance term `exp(-4 |p_j - p_i|^2 / r^2)` falls to `exp(-4)` at two spacings, so
+// that the rule averages over the point's own ring of neighbors, not across features.
+constexpr double PLANAR_WEIGHT_SCALE_FACTOR = 2.;
+// The iterations stop once the RMS distance of the points to their input positions reaches this
+// factor times the noise level estimated from the input (Morozov's discrepancy principle, which asks
+// for a factor above 1: the moves are not all along the noise).
+constexpr double DISCREPANCY_FACTOR = 1.1;
 // the standard deviation of a Gaussian per median of its absolute value
 constexpr double NOISE_LEVEL_PER_MEDIAN = 1.482602218505602;
 // the neighbors of the noise estimate's quadric fits: more than the six coefficients, few enough
@@ -105,10 +93,10 @@ namespace internal {
 struct Denoising_settings
 {
   Normal_filter_settings filter;
-  double step_size = DEFAULT_PLANAR_STEP_SIZE;
+  double step_size = defaults::PLANAR_STEP_SIZE;
   double maximum_deviation = 0.; // 0: DEVIATION_SCALE_FACTOR times the scale
   double weight_radius = 0.;     // 0: PLANAR_WEIGHT_SCALE_FACTOR times the scale
-  double rank_threshold = DEFAULT_RANK_THRESHOLD;
+  double rank_threshold = defaults::RANK_THRESHOLD;
   bool in_place = false;         // the authors' Gauss-Seidel order of stages 2 and 3, sequential
   bool authors_vertex_update = false;
   bool stop_at_noise_level = true;
@@ -124,9 +112,9 @@ Denoising_settings denoising_settings(const NamedParameters& np)
   using CGAL::parameters::get_parameter;
   Denoising_settings s;
   s.filter = normal_filter_settings(np);
-  s.step_size = choose_parameter(get_parameter(np, internal_np::step_size), DEFAULT_PLANAR_STEP_SIZE);
+  s.step_size = choose_parameter(get_parameter(np, internal_np::step_size), defaults::PLANAR_STEP_SIZE);
   s.maximum_deviation = choose_parameter(get_parameter(np, internal_np::maximum_deviation), 0.);
-  s.rank_threshold = choose_parameter(get_parameter(np, internal_np::rank_threshold), DEFAULT_RANK_THRESHOLD);
+  s.rank_threshold = choose_parameter(get_parameter(np, internal_np::rank_threshold), defaults::RANK_THRESHOLD);
   s.weight_radius = choose_parameter(get_parameter(np, internal_np::planar_weight_radius), 0.);
   s.in_place = choose_parameter(get_parameter(np, internal_np::in_place_updates), false);
   s.authors_vertex_update = choose_parameter(get_parameter(np, internal_np::authors_vertex_update), false);
@@ -385,7 +373,7 @@ Point_set_denoising_summary denoise_all(Oriented_points& input, const Neighbor_l
 
   **What the package changes against the authors' code**, and why:
   - *A rank test before the edge and corner solves* (`rank_threshold`, default
-    `DEFAULT_RANK_THRESHOLD`): the authors invert the 3x3 metric, which is singular wherever the
+    `defaults::RANK_THRESHOLD`): the authors invert the 3x3 metric, which is singular wherever the
     neighbor normals agree (a point on a plane or a smooth edge classified as a corner or an edge, one
     in five under noise); its inverse then throws the point along a direction no plane constrains, as
     far as `epsilon` allows. Here a direction whose eigenvalue is below `rank_threshold` times the
@@ -404,7 +392,7 @@ Point_set_denoising_summary denoise_all(Oriented_points& input, const Neighbor_l
     the cut-off cone `2 (1 - rho)`, where the term is `exp(-8)`.
   - *A stopping rule*: the authors run all `p` iterations, and the points drift past their best
     after a while (features erode). Here the iterations stop once the RMS distance of the points to
-    their input positions reaches `DISCREPANCY_FACTOR` times the noise level `sigma` estimated from
+    their input positions reaches 1.1 times the noise level `sigma` estimated from
     the input (1.4826 times the median distance of a point to the quadric fitted to its 20 nearest
     neighbors): Morozov's discrepancy principle. `stop_at_noise_level(false)` runs all iterations.
   - `authors_vertex_update(true)` with `rank_threshold(0)` gives the authors' stage 3.
@@ -445,28 +433,28 @@ Point_set_denoising_summary denoise_all(Oriented_points& input, const Neighbor_l
     \cgalParamNBegin{step_size}
       \cgalParamDescription{the step `alpha` of the planar rule}
       \cgalParamType{`double`}
-      \cgalParamDefault{`DEFAULT_PLANAR_STEP_SIZE` (0.1)}
+      \cgalParamDefault{`defaults::PLANAR_STEP_SIZE` (0.1)}
       \cgalParamExtra{finite and `>= 0`, otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{maximum_deviation}
       \cgalParamDescription{the bound `epsilon`: a move to a position at this distance from the
         input position or farther is refused}
       \cgalParamType{`double`}
-      \cgalParamDefault{`2 m` (`DEVIATION_SCALE_FACTOR`)}
+      \cgalParamDefault{`2 m` (the authors')}
       \cgalParamExtra{finite and `>= 0` (0 selects the default), otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{planar_weight_radius}
       \cgalParamDescription{the radius `r` of the weights `exp(-4 |p_j - p_i|^2 / r^2)` of the planar
         rule (and of the package's edge and corner metrics)}
       \cgalParamType{`double`}
-      \cgalParamDefault{`2 m` (`PLANAR_WEIGHT_SCALE_FACTOR`, the authors')}
+      \cgalParamDefault{`2 m` (the authors')}
       \cgalParamExtra{finite and `>= 0` (0 selects the default), otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{rank_threshold}
       \cgalParamDescription{the rank test of the edge and corner solves: directions of eigenvalues
         below this fraction of the largest are not solved for}
       \cgalParamType{`double`}
-      \cgalParamDefault{`DEFAULT_RANK_THRESHOLD` (0.1)}
+      \cgalParamDefault{`defaults::RANK_THRESHOLD` (0.1)}
       \cgalParamExtra{in `[0, 1]`, otherwise `std::invalid_argument`; 0 is the authors' solve}
     \cgalParamNEnd
     \cgalParamNBegin{in_place_updates}

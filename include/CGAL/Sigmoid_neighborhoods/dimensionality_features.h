@@ -35,21 +35,6 @@ enum class Dimensionality
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
-  the name of a label as the tool writes it in files: `linear`, `planar`, `scattered` or `degenerate`.
-*/
-inline const char* dimensionality_name(Dimensionality d)
-{
-  switch(d)
-  {
-    case Dimensionality::LINEAR: return "linear";
-    case Dimensionality::PLANAR: return "planar";
-    case Dimensionality::SCATTERED: return "scattered";
-    default: return "degenerate";
-  }
-}
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
   the eigenvalue features of one weighted neighborhood (the paper's Section 4).
   A degenerate neighborhood has `error = eigenentropy = +inf`, all other values 0 and the label `DEGENERATE`.
 */
@@ -59,8 +44,13 @@ struct Dimensionality_features
   double linearity = 0.;                          ///< `(lambda1 - lambda2) / lambda1`
   double planarity = 0.;                          ///< `(lambda2 - lambda3) / lambda1`
   double scattering = 0.;                         ///< `lambda3 / lambda1`
-  double error = std::numeric_limits<double>::infinity(); ///< `E_dim`, in `[0, ln 3]`
-  /// the eigenentropy `-sum e_i ln e_i` with `e_i = lambda_i / (lambda1 + lambda2 + lambda3)`, in `[0, ln 3]`
+  /// `E_dim = -L ln L - P ln P - S ln S` (`0 ln 0 = 0`) of the linearity `L`, planarity `P` and
+  /// scattering `S`: the Shannon entropy of the dimensionality, in `[0, ln 3]`
+  double error = std::numeric_limits<double>::infinity();
+  /// the eigenentropy of Weinmann et al. (2015), `-sum e_i ln e_i` with `e_i = lambda_i / (lambda1 +
+  /// lambda2 + lambda3)`, in `[0, ln 3]` and invariant under a scaling of the neighborhood. Nothing is
+  /// added to the eigenvalues (pgeof adds an absolute `1e-3` to each, which makes its value depend on
+  /// the unit of the coordinates).
   double eigenentropy = std::numeric_limits<double>::infinity();
   /// the largest of linearity, planarity and scattering (ties to the first), or `DEGENERATE`
   Dimensionality label = Dimensionality::DEGENERATE;
@@ -69,30 +59,27 @@ struct Dimensionality_features
   bool is_degenerate() const { return label == Dimensionality::DEGENERATE; }
 };
 
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  the Shannon entropy `E_dim = -L ln L - P ln P - S ln S`, with `0 ln 0 = 0`, of linearity `L`,
-  planarity `P` and scattering `S`. It lies in `[0, ln 3]` when `L + P + S = 1`.
-*/
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// the Shannon entropy `E_dim = -L ln L - P ln P - S ln S`, with `0 ln 0 = 0`, of linearity `L`,
+// planarity `P` and scattering `S`
 inline double dimensionality_error(double linearity, double planarity, double scattering)
 {
   auto term = [](double x) { return x > 0. ? -x * std::log(x) : 0.; };
   return term(linearity) + term(planarity) + term(scattering);
 }
 
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  the eigenentropy of Weinmann et al. (2015), `-e1 ln e1 - e2 ln e2 - e3 ln e3` with
-  `e_i = lambda_i / (lambda1 + lambda2 + lambda3)` and `0 ln 0 = 0`: in `[0, ln 3]`, and, as `E_dim`,
-  invariant under a scaling of the neighborhood. Nothing is added to the eigenvalues (pgeof adds an
-  absolute `1e-3` to each, which makes its value depend on the unit of the coordinates).
-  \pre the eigenvalues are non-negative with a positive sum (not checked)
-*/
+// the eigenentropy of Weinmann et al. (2015) (see Dimensionality_features::eigenentropy); the
+// eigenvalues non-negative with a positive sum (not checked)
 inline double eigenentropy(double lambda1, double lambda2, double lambda3)
 {
   const double inverse_sum = 1. / (lambda1 + lambda2 + lambda3);
   return dimensionality_error(lambda1 * inverse_sum, lambda2 * inverse_sum, lambda3 * inverse_sum);
 }
+
+} // namespace internal
+/// \endcond
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
@@ -113,8 +100,8 @@ inline Dimensionality_features dimensionality_features_from_eigenvalues(double l
   f.linearity = (lambda1 - lambda2) / lambda1;
   f.planarity = (lambda2 - lambda3) / lambda1;
   f.scattering = lambda3 / lambda1;
-  f.error = dimensionality_error(f.linearity, f.planarity, f.scattering);
-  f.eigenentropy = eigenentropy(lambda1, lambda2, lambda3);
+  f.error = internal::dimensionality_error(f.linearity, f.planarity, f.scattering);
+  f.eigenentropy = internal::eigenentropy(lambda1, lambda2, lambda3);
   f.label = Dimensionality::LINEAR;
   if(f.planarity > f.linearity)
     f.label = Dimensionality::PLANAR;

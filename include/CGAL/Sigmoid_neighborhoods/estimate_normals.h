@@ -103,7 +103,7 @@ void write_normals(PointRange& points, const std::vector<Eigen::Vector3d>& norma
     \cgalParamNBegin{degree_fitting}
       \cgalParamDescription{the degree of the jet (CGAL's named parameter)}
       \cgalParamType{`unsigned int`}
-      \cgalParamDefault{`DEFAULT_JET_DEGREE` (2)}
+      \cgalParamDefault{`defaults::JET_DEGREE` (2)}
       \cgalParamExtra{jet fitting needs `k + 1 >= (d + 1)(d + 2) / 2` points}
     \cgalParamNEnd
     \cgalParamNBegin{number_of_threads}
@@ -125,8 +125,9 @@ void estimate_normals(PointRange& points, unsigned int k, const CGAL_NP_CLASS& n
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   const Normal_estimation_method method =
-    choose_parameter(get_parameter(np, internal_np::normal_estimation_method), DEFAULT_NORMAL_ESTIMATION_METHOD);
-  const unsigned int degree = choose_parameter(get_parameter(np, CGAL::internal_np::degree_fitting), DEFAULT_JET_DEGREE);
+    choose_parameter(get_parameter(np, internal_np::normal_estimation_method), defaults::NORMAL_ESTIMATION_METHOD);
+  const unsigned int degree =
+    choose_parameter(get_parameter(np, CGAL::internal_np::degree_fitting), defaults::JET_DEGREE);
   // points per fit: a plane needs 3, a jet of degree d its (d + 1)(d + 2) / 2 coefficients
   const unsigned int fewest = method == Normal_estimation_method::PCA ? 3u : (degree + 1) * (degree + 2) / 2;
   if(std::size_t(k) + 1 < fewest)

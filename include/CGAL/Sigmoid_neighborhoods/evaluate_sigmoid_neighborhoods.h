@@ -77,11 +77,11 @@ void evaluate_all(const Oriented_points& input, const Neighbor_query& query, con
       const auto a_it = std::lower_bound(A.begin(), A.end(), e.optimal.a);
       if(a_it != A.begin())
         e.a_lowering = is_degenerate_triple(local, *(a_it - 1), e.optimal.b, e.optimal.k, settings, s.w)
-                         ? Lowering::FAILS : Lowering::STILL_VALID;
+                         ? Point_evaluation::Lowering::FAILS : Point_evaluation::Lowering::STILL_VALID;
       const auto b_it = std::lower_bound(B.begin(), B.end(), e.optimal.b);
       if(e.optimal.b != e.optimal.a && b_it != B.begin() && *(b_it - 1) >= e.optimal.a)
         e.b_lowering = is_degenerate_triple(local, e.optimal.a, *(b_it - 1), e.optimal.k, settings, s.w)
-                         ? Lowering::FAILS : Lowering::STILL_VALID;
+                         ? Point_evaluation::Lowering::FAILS : Point_evaluation::Lowering::STILL_VALID;
       return e;
     },
     sink);
@@ -131,25 +131,25 @@ void evaluate_all(const Oriented_points& input, const Neighbor_query& query, con
     \cgalParamNBegin{k_min}
       \cgalParamDescription{the smallest neighborhood size of the search, `K = {k_min, ..., k_max}`}
       \cgalParamType{`unsigned int`}
-      \cgalParamDefault{`DEFAULT_K_MIN` (6)}
+      \cgalParamDefault{`defaults::K_MIN` (6)}
       \cgalParamExtra{`1 <= k_min <= k_max`, otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{k_max}
       \cgalParamDescription{the largest neighborhood size of the search}
       \cgalParamType{`unsigned int`}
-      \cgalParamDefault{`DEFAULT_K_MAX` (20)}
+      \cgalParamDefault{`defaults::K_MAX` (20)}
       \cgalParamExtra{at least `k_max + 1` points are needed}
     \cgalParamNEnd
     \cgalParamNBegin{a_grid}
       \cgalParamDescription{the values of `a` (radians) that the search visits}
       \cgalParamType{`std::vector<double>`}
-      \cgalParamDefault{`default_angle_grid()`: `{0, pi/6, pi/3, pi/2, 2pi/3, 5pi/6, pi}`}
+      \cgalParamDefault{`defaults::angle_grid()`: `{0, pi/6, pi/3, pi/2, 2pi/3, 5pi/6, pi}`}
       \cgalParamExtra{values in `[0, pi]`, sorted and deduplicated; only pairs with `a <= b` are searched}
     \cgalParamNEnd
     \cgalParamNBegin{b_grid}
       \cgalParamDescription{the values of `b` (radians) that the search visits}
       \cgalParamType{`std::vector<double>`}
-      \cgalParamDefault{`default_angle_grid()`}
+      \cgalParamDefault{`defaults::angle_grid()`}
       \cgalParamExtra{as `a_grid`; at least one pair `a <= b` must exist}
     \cgalParamNEnd
     \cgalParamNBegin{barycenter}
@@ -160,7 +160,7 @@ void evaluate_all(const Oriented_points& input, const Neighbor_query& query, con
     \cgalParamNBegin{angle_tolerance}
       \cgalParamDescription{angles between normals up to it (radians) count as 0}
       \cgalParamType{`double`}
-      \cgalParamDefault{`DEFAULT_ANGLE_TOLERANCE` (`1e-6`)}
+      \cgalParamDefault{`defaults::ANGLE_TOLERANCE` (`1e-6`)}
       \cgalParamExtra{in `[0, pi)`, otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{cut_off_angle}

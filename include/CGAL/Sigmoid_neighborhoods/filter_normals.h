@@ -8,7 +8,7 @@
 
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
-#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/defaults.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Local_neighborhood.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
@@ -40,27 +40,14 @@ namespace Sigmoid_neighborhoods {
 
 // The named parameters of `filter_normals()` are declared in parameters.h with the others.
 
-/// \ingroup PkgSigmoidNeighborhoodsNormalFilter
-/// The default number of sweeps `p` of `filter_normals()` (the authors' code).
-constexpr unsigned int DEFAULT_FILTER_ITERATIONS = 50;
-/// \ingroup PkgSigmoidNeighborhoodsNormalFilter
-/// The default dot-product cut-off `rho`: neighbor `j` votes for `i` when `n_i * n_j > rho`.
-constexpr double DEFAULT_NORMAL_CUT_OFF = 0.9;
-/// \ingroup PkgSigmoidNeighborhoodsNormalFilter
-/// The default eigenvalue threshold `tau` of the binary eigenvalue optimisation.
-constexpr double DEFAULT_EIGENVALUE_THRESHOLD = 0.25;
-/// \ingroup PkgSigmoidNeighborhoodsNormalFilter
-/// The default damping factor `d` of the update `n <- normalize(T n + d n)`.
-constexpr double DEFAULT_DAMPING_FACTOR = 3.;
-/// \ingroup PkgSigmoidNeighborhoodsNormalFilter
-/// The default half width of the adaptive sizes `{k_i - 10, ..., k_i + 10}` (SPEC §7).
-constexpr unsigned int DEFAULT_NEIGHBORHOOD_SIZE_RANGE = 10;
-/// \ingroup PkgSigmoidNeighborhoodsNormalFilter
-/// The scale `m` of the default ball radius `5 m` is the mean distance to this many neighbors.
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+// The scale `m` of the default ball radius `5 m` is the mean distance to this many neighbors.
 constexpr unsigned int FILTER_SCALE_NEIGHBORS = 12;
-/// \ingroup PkgSigmoidNeighborhoodsNormalFilter
-/// The default ball radius is this factor times the scale `m`.
+// The default ball radius is this factor times the scale `m`.
 constexpr double FILTER_RADIUS_FACTOR = 5.;
+} // namespace internal
+/// \endcond
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsNormalFilter
@@ -83,14 +70,14 @@ namespace internal {
 
 struct Normal_filter_settings
 {
-  unsigned int iterations = DEFAULT_FILTER_ITERATIONS;
-  double cut_off = DEFAULT_NORMAL_CUT_OFF;
-  double eigenvalue_threshold = DEFAULT_EIGENVALUE_THRESHOLD;
-  double damping = DEFAULT_DAMPING_FACTOR;
+  unsigned int iterations = defaults::FILTER_ITERATIONS;
+  double cut_off = defaults::NORMAL_CUT_OFF;
+  double eigenvalue_threshold = defaults::EIGENVALUE_THRESHOLD;
+  double damping = defaults::DAMPING_FACTOR;
   double radius = 0.; // 0: FILTER_RADIUS_FACTOR times the mean distance to FILTER_SCALE_NEIGHBORS neighbors
   bool adaptive = false;
-  unsigned int size_range = DEFAULT_NEIGHBORHOOD_SIZE_RANGE;
-  double angle_tolerance = DEFAULT_ANGLE_TOLERANCE;
+  unsigned int size_range = defaults::NEIGHBORHOOD_SIZE_RANGE;
+  double angle_tolerance = defaults::ANGLE_TOLERANCE;
   Barycenter barycenter = Barycenter::WEIGHTED;
   unsigned int threads = 0; // of a call with Parallel_tag; 0: the default
   bool line_angles = false;  // the cut-off on |n_i . n_j|: normals whose signs mean nothing
@@ -102,16 +89,17 @@ Normal_filter_settings normal_filter_settings(const NamedParameters& np)
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   Normal_filter_settings s;
-  s.iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), DEFAULT_FILTER_ITERATIONS);
-  s.cut_off = choose_parameter(get_parameter(np, internal_np::normal_cut_off), DEFAULT_NORMAL_CUT_OFF);
+  s.iterations =
+    choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), defaults::FILTER_ITERATIONS);
+  s.cut_off = choose_parameter(get_parameter(np, internal_np::normal_cut_off), defaults::NORMAL_CUT_OFF);
   s.eigenvalue_threshold =
-    choose_parameter(get_parameter(np, internal_np::eigenvalue_threshold), DEFAULT_EIGENVALUE_THRESHOLD);
-  s.damping = choose_parameter(get_parameter(np, internal_np::damping_factor), DEFAULT_DAMPING_FACTOR);
+    choose_parameter(get_parameter(np, internal_np::eigenvalue_threshold), defaults::EIGENVALUE_THRESHOLD);
+  s.damping = choose_parameter(get_parameter(np, internal_np::damping_factor), defaults::DAMPING_FACTOR);
   s.radius = choose_parameter(get_parameter(np, CGAL::internal_np::neighbor_radius), 0.);
   s.adaptive = choose_parameter(get_parameter(np, internal_np::adaptive_neighborhood_size), false);
   s.size_range =
-    choose_parameter(get_parameter(np, internal_np::neighborhood_size_range), DEFAULT_NEIGHBORHOOD_SIZE_RANGE);
-  s.angle_tolerance = choose_parameter(get_parameter(np, internal_np::angle_tolerance), DEFAULT_ANGLE_TOLERANCE);
+    choose_parameter(get_parameter(np, internal_np::neighborhood_size_range), defaults::NEIGHBORHOOD_SIZE_RANGE);
+  s.angle_tolerance = choose_parameter(get_parameter(np, internal_np::angle_tolerance), defaults::ANGLE_TOLERANCE);
   s.barycenter = choose_parameter(get_parameter(np, internal_np::barycenter), Barycenter::WEIGHTED);
   s.threads = number_of_threads(np);
   s.line_angles = line_angles(np);
@@ -452,34 +440,33 @@ Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_
     \cgalParamNBegin{number_of_iterations}
       \cgalParamDescription{the number of sweeps `p`}
       \cgalParamType{`unsigned int`}
-      \cgalParamDefault{`DEFAULT_FILTER_ITERATIONS` (50)}
+      \cgalParamDefault{`defaults::FILTER_ITERATIONS` (50)}
       \cgalParamExtra{a CGAL named parameter}
     \cgalParamNEnd
     \cgalParamNBegin{neighbor_radius}
       \cgalParamDescription{the radius of the default ball neighborhoods}
       \cgalParamType{`double`}
-      \cgalParamDefault{`5 m`, `m` the mean distance of the points to their 12 nearest neighbors
-        (`FILTER_RADIUS_FACTOR`, `FILTER_SCALE_NEIGHBORS`)}
+      \cgalParamDefault{`5 m`, `m` the mean distance of the points to their 12 nearest neighbors}
       \cgalParamExtra{a CGAL named parameter; finite and `>= 0` (0 selects the default), otherwise
         `std::invalid_argument`; not read when `neighborhoods` is given}
     \cgalParamNEnd
     \cgalParamNBegin{normal_cut_off}
       \cgalParamDescription{the dot-product cut-off `rho`: neighbor `j` votes for `i` when `n_i * n_j > rho`}
       \cgalParamType{`double`}
-      \cgalParamDefault{`DEFAULT_NORMAL_CUT_OFF` (0.9)}
+      \cgalParamDefault{`defaults::NORMAL_CUT_OFF` (0.9)}
       \cgalParamExtra{in `[-1, 1]`, otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{eigenvalue_threshold}
       \cgalParamDescription{the threshold `tau` of the binary eigenvalue optimisation: eigenvalues of
         the voting tensor below it become 0, the others 1 (the largest always 1)}
       \cgalParamType{`double`}
-      \cgalParamDefault{`DEFAULT_EIGENVALUE_THRESHOLD` (0.25)}
+      \cgalParamDefault{`defaults::EIGENVALUE_THRESHOLD` (0.25)}
       \cgalParamExtra{finite, otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{damping_factor}
       \cgalParamDescription{the damping factor `d` of the update `n_i <- normalize(T~ n_i + d n_i)`}
       \cgalParamType{`double`}
-      \cgalParamDefault{`DEFAULT_DAMPING_FACTOR` (3)}
+      \cgalParamDefault{`defaults::DAMPING_FACTOR` (3)}
       \cgalParamExtra{finite and `>= 0`, otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{neighborhoods}
@@ -501,13 +488,13 @@ Normal_filter_summary filter_normals_all(Oriented_points& input, const Neighbor_
     \cgalParamNBegin{neighborhood_size_range}
       \cgalParamDescription{the half width `r` of the adaptive sizes}
       \cgalParamType{`unsigned int`}
-      \cgalParamDefault{`DEFAULT_NEIGHBORHOOD_SIZE_RANGE` (10)}
+      \cgalParamDefault{`defaults::NEIGHBORHOOD_SIZE_RANGE` (10)}
       \cgalParamExtra{only positive sizes, at most `n - 1`, are tried}
     \cgalParamNEnd
     \cgalParamNBegin{angle_tolerance}
       \cgalParamDescription{angles up to it (radians) count as 0 in the adaptive `E_dim`}
       \cgalParamType{`double`}
-      \cgalParamDefault{`DEFAULT_ANGLE_TOLERANCE` (`1e-6`)}
+      \cgalParamDefault{`defaults::ANGLE_TOLERANCE` (`1e-6`)}
       \cgalParamExtra{in `[0, pi)`, otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{barycenter}
@@ -590,34 +577,33 @@ filter_normals(PointRange& points, const CGAL_NP_CLASS& np = CGAL::parameters::d
     \cgalParamNBegin{number_of_iterations}
       \cgalParamDescription{the number of sweeps `p`}
       \cgalParamType{`unsigned int`}
-      \cgalParamDefault{`DEFAULT_FILTER_ITERATIONS` (50)}
+      \cgalParamDefault{`defaults::FILTER_ITERATIONS` (50)}
       \cgalParamExtra{a CGAL named parameter}
     \cgalParamNEnd
     \cgalParamNBegin{neighbor_radius}
       \cgalParamDescription{the radius of the default ball neighborhoods}
       \cgalParamType{`double`}
-      \cgalParamDefault{`5 m`, `m` the mean distance of the points to their 12 nearest neighbors
-        (`FILTER_RADIUS_FACTOR`, `FILTER_SCALE_NEIGHBORS`)}
+      \cgalParamDefault{`5 m`, `m` the mean distance of the points to their 12 nearest neighbors}
       \cgalParamExtra{a CGAL named parameter; finite and `>= 0` (0 selects the default), otherwise
         `std::invalid_argument`; not read when `neighborhoods` is given}
     \cgalParamNEnd
     \cgalParamNBegin{normal_cut_off}
       \cgalParamDescription{the dot-product cut-off `rho`: neighbor `j` votes for `i` when `n_i * n_j > rho`}
       \cgalParamType{`double`}
-      \cgalParamDefault{`DEFAULT_NORMAL_CUT_OFF` (0.9)}
+      \cgalParamDefault{`defaults::NORMAL_CUT_OFF` (0.9)}
       \cgalParamExtra{in `[-1, 1]`, otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{eigenvalue_threshold}
       \cgalParamDescription{the threshold `tau` of the binary eigenvalue optimisation: eigenvalues of
         the voting tensor below it become 0, the others 1 (the largest always 1)}
       \cgalParamType{`double`}
-      \cgalParamDefault{`DEFAULT_EIGENVALUE_THRESHOLD` (0.25)}
+      \cgalParamDefault{`defaults::EIGENVALUE_THRESHOLD` (0.25)}
       \cgalParamExtra{finite, otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{damping_factor}
       \cgalParamDescription{the damping factor `d` of the update `n_i <- normalize(T~ n_i + d n_i)`}
       \cgalParamType{`double`}
-      \cgalParamDefault{`DEFAULT_DAMPING_FACTOR` (3)}
+      \cgalParamDefault{`defaults::DAMPING_FACTOR` (3)}
       \cgalParamExtra{finite and `>= 0`, otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{neighborhoods}
@@ -640,13 +626,13 @@ filter_normals(PointRange& points, const CGAL_NP_CLASS& np = CGAL::parameters::d
     \cgalParamNBegin{neighborhood_size_range}
       \cgalParamDescription{the half width `r` of the adaptive sizes}
       \cgalParamType{`unsigned int`}
-      \cgalParamDefault{`DEFAULT_NEIGHBORHOOD_SIZE_RANGE` (10)}
+      \cgalParamDefault{`defaults::NEIGHBORHOOD_SIZE_RANGE` (10)}
       \cgalParamExtra{only positive sizes, at most `n - 1`, are tried}
     \cgalParamNEnd
     \cgalParamNBegin{angle_tolerance}
       \cgalParamDescription{angles up to it (radians) count as 0 in the adaptive `E_dim`}
       \cgalParamType{`double`}
-      \cgalParamDefault{`DEFAULT_ANGLE_TOLERANCE` (`1e-6`)}
+      \cgalParamDefault{`defaults::ANGLE_TOLERANCE` (`1e-6`)}
       \cgalParamExtra{in `[0, pi)`, otherwise `std::invalid_argument`}
     \cgalParamNEnd
     \cgalParamNBegin{barycenter}

@@ -8,8 +8,6 @@
 
 #include <CGAL/Named_function_parameters.h>
 
-#include <stdexcept>
-#include <string>
 
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
@@ -24,26 +22,6 @@ enum class Barycenter
   WEIGHTED,  ///< `c_i = sum w_ij p_j / sum w_ij` (default: the paper's degenerate cases need it)
   UNWEIGHTED ///< `c_i = (1 / |N_i|) sum p_j`, the paper's literal formula
 };
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  the name of a barycenter on the command line, in files and in Python: `weighted` or `unweighted`.
-*/
-inline const char* barycenter_name(Barycenter b) { return b == Barycenter::UNWEIGHTED ? "unweighted" : "weighted"; }
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  the barycenter named `name` (`weighted` or `unweighted`).
-  \throws std::invalid_argument for any other name
-*/
-inline Barycenter barycenter_from_name(const std::string& name)
-{
-  if(name == "weighted")
-    return Barycenter::WEIGHTED;
-  if(name == "unweighted")
-    return Barycenter::UNWEIGHTED;
-  throw std::invalid_argument("unknown barycenter '" + name + "': expected weighted or unweighted");
-}
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef

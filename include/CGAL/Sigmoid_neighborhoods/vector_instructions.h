@@ -26,14 +26,15 @@ enum class Vector_instructions
   AVX512
 };
 
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  `"portable"`, `"avx2"` or `"avx512"`.
-*/
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+// for the messages of the named parameter `vector_instructions`
 inline const char* vector_instructions_name(Vector_instructions v)
 {
   return v == Vector_instructions::AVX512 ? "avx512" : v == Vector_instructions::AVX2 ? "avx2" : "portable";
 }
+} // namespace internal
+/// \endcond
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef

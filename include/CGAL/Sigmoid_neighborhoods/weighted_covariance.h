@@ -22,11 +22,12 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
-/*!
-  \ingroup PkgSigmoidNeighborhoodsRef
-  the relative threshold `1e-12` of the degenerate test of `Weighted_covariance::is_degenerate()` (SPEC §4).
-*/
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+// the relative threshold of the degenerate test of `Weighted_covariance::is_degenerate()` (SPEC §4)
 constexpr double DEGENERATE_TRACE_THRESHOLD = 1e-12;
+} // namespace internal
+/// \endcond
 
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
@@ -47,7 +48,7 @@ struct Weighted_covariance
   bool is_degenerate() const
   {
     return !(weight_sum > 0.) ||
-           trace() <= DEGENERATE_TRACE_THRESHOLD * weight_sum * squared_radius;
+           trace() <= internal::DEGENERATE_TRACE_THRESHOLD * weight_sum * squared_radius;
   }
 };
 

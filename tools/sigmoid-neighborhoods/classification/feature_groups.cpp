@@ -233,7 +233,7 @@ void compute_optimal(Feature_group_input& in, SN::Neighborhood_criterion criteri
     for(SN::Point_feature f : {SN::Point_feature::SIGMOID_A, SN::Point_feature::SIGMOID_B, SN::Point_feature::RADIUS,
                                SN::Point_feature::DIMENSIONALITY_ERROR})
       which.push_back(f);
-  const std::vector<double> grid = triple ? SN::default_angle_grid() : std::vector<double>{CGAL_PI};
+  const std::vector<double> grid = triple ? SN::defaults::angle_grid() : std::vector<double>{CGAL_PI};
   std::vector<SN::Point_features> features;
   features.reserve(in.model.points.size());
   SN::compute_optimal_point_features<SN::Parallel_if_available_tag>(

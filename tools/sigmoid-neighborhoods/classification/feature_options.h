@@ -12,7 +12,7 @@
 #include "../command_line.h"
 
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
-#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/defaults.h>
 
 #include <CGAL/Bbox_2.h>
 
@@ -48,7 +48,7 @@ struct Feature_options
 {
   std::vector<std::string> groups;
   unsigned int fixed_k = 20;                           // group k20 (its name follows fixed_k)
-  unsigned int k_min = SN::DEFAULT_K_MIN, k_max = SN::DEFAULT_K_MAX; // the optimal searches
+  unsigned int k_min = SN::defaults::K_MIN, k_max = SN::defaults::K_MAX; // the optimal searches
   std::vector<unsigned int> scales{10, 25, 50, 100};   // groups multiscale and multiscale-sigmoid
   double sigmoid_a = CGAL_PI / 6., sigmoid_b = CGAL_PI / 3.; // multiscale-sigmoid's weights
   std::vector<double> cell_sizes{2.5, 5., 10.};        // group height

@@ -12,7 +12,7 @@
 #include "table4_data.h"
 
 #include <CGAL/Sigmoid_neighborhoods/denoise_point_set.h>
-#include <CGAL/Sigmoid_neighborhoods/denoising_utilities.h>
+#include "normal_noise.h"
 #include <CGAL/Sigmoid_neighborhoods/estimate_normals.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>

@@ -13,7 +13,7 @@
 #include "../tool_paths.h"
 
 #include <Sigmoid_neighborhoods_readers/read_polygon_mesh.h>
-#include <CGAL/Sigmoid_neighborhoods/subdivided_polyhedra.h>
+#include "subdivided_polyhedra.h"
 
 #include <CGAL/Surface_mesh.h>
 

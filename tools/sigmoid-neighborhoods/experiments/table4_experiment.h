@@ -13,7 +13,8 @@
 #include "table4_data.h"
 #include "table4_models.h"
 
-#include <CGAL/Sigmoid_neighborhoods/denoising_utilities.h>
+#include "normal_noise.h"
+#include <CGAL/Sigmoid_neighborhoods/compute_mean_neighbor_distance.h>
 #include <CGAL/Sigmoid_neighborhoods/filter_normals.h>
 
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>

@@ -71,8 +71,8 @@ inline Denoise_model denoise_settings(const std::string& name)
   if(const Denoise_model* m = find_table4_model(name))
     return *m;
   const std::filesystem::path file(name);
-  return {file.stem().string(),          file.filename().string(),      SN::DEFAULT_FILTER_ITERATIONS,
-          SN::DEFAULT_NORMAL_CUT_OFF,    SN::DEFAULT_EIGENVALUE_THRESHOLD, 0,
+  return {file.stem().string(),          file.filename().string(),      SN::defaults::FILTER_ITERATIONS,
+          SN::defaults::NORMAL_CUT_OFF,    SN::defaults::EIGENVALUE_THRESHOLD, 0,
           {0, 0, 0, 0, 0, 0}};
 }
 

@@ -9,10 +9,11 @@
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
 #include <CGAL/Sigmoid_neighborhoods/Neighborhood_criterion.h>
 #include <CGAL/Sigmoid_neighborhoods/weighted_covariance.h>
-#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/defaults.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_query.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/Oriented_points.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/tie_rule.h>
 
 #include <CGAL/number_utils.h>
 #include <boost/property_map/property_map.hpp>

@@ -15,6 +15,7 @@
 #include <CGAL/Sigmoid_neighborhoods/internal/Vector_lanes.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/approximate_cosine.h>
 #include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/tie_rule.h>
 
 #include <Eigen/Core>
 

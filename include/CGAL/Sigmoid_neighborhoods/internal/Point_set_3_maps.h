@@ -8,7 +8,6 @@
 #ifndef CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_POINT_SET_3_MAPS_H
 #define CGAL_SIGMOID_NEIGHBORHOODS_INTERNAL_POINT_SET_3_MAPS_H
 
-#include <CGAL/Sigmoid_neighborhoods/Point_set_3_properties.h>
 #include <CGAL/Sigmoid_neighborhoods/dimensionality_features.h>
 
 #include <CGAL/Point_set_3.h>
@@ -47,6 +46,11 @@ auto with_point_set_maps(const CGAL::Point_set_3<Point, Vector>& points, const N
 {
   return np.point_map(points.point_map()).normal_map(points.normal_map());
 }
+
+// The prefix of the properties the `CGAL::Point_set_3` overloads add: CloudCompare loads a PLY
+// property `scalar_<name>` as the scalar field `<name>`, so that `CGAL::IO::write_PLY()` of the point
+// set gives a file CloudCompare opens with every field, and `CGAL::IO::read_PLY()` gives the names back.
+const std::string POINT_SET_PROPERTY_PREFIX = "scalar_";
 
 // The property `name` (prefixed): the existing one, else added with `value`; one of that name
 // and another type is an error (it would be left as it is).

@@ -9,7 +9,7 @@
 #include <CGAL/Sigmoid_neighborhoods/parameters.h>
 #include <CGAL/Sigmoid_neighborhoods/Cosine_sigmoid.h>
 #include <CGAL/Sigmoid_neighborhoods/Neighborhood_criterion.h>
-#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/defaults.h>
 #include <CGAL/Sigmoid_neighborhoods/vector_instructions.h>
 
 #include <algorithm>
@@ -25,10 +25,10 @@ namespace internal {
 struct Search_settings
 {
   std::vector<double> a_grid, b_grid;
-  unsigned int k_min = DEFAULT_K_MIN, k_max = DEFAULT_K_MAX;
+  unsigned int k_min = defaults::K_MIN, k_max = defaults::K_MAX;
   Barycenter barycenter = Barycenter::WEIGHTED;
   Neighborhood_criterion criterion = Neighborhood_criterion::DIMENSIONALITY;
-  double angle_tolerance = DEFAULT_ANGLE_TOLERANCE;
+  double angle_tolerance = defaults::ANGLE_TOLERANCE;
   unsigned int threads = 0; // of a call with Parallel_tag; 0: the default
   Vector_instructions instructions = widest_vector_instructions();
 
@@ -78,18 +78,18 @@ Search_settings search_settings(const NamedParameters& np)
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   Search_settings s;
-  s.k_min = choose_parameter(get_parameter(np, internal_np::k_min), DEFAULT_K_MIN);
-  s.k_max = choose_parameter(get_parameter(np, internal_np::k_max), DEFAULT_K_MAX);
-  s.a_grid = checked_grid(choose_parameter(get_parameter(np, internal_np::a_grid), default_angle_grid()), "a");
-  s.b_grid = checked_grid(choose_parameter(get_parameter(np, internal_np::b_grid), default_angle_grid()), "b");
+  s.k_min = choose_parameter(get_parameter(np, internal_np::k_min), defaults::K_MIN);
+  s.k_max = choose_parameter(get_parameter(np, internal_np::k_max), defaults::K_MAX);
+  s.a_grid = checked_grid(choose_parameter(get_parameter(np, internal_np::a_grid), defaults::angle_grid()), "a");
+  s.b_grid = checked_grid(choose_parameter(get_parameter(np, internal_np::b_grid), defaults::angle_grid()), "b");
   s.barycenter = choose_parameter(get_parameter(np, internal_np::barycenter), Barycenter::WEIGHTED);
   s.criterion = choose_parameter(get_parameter(np, internal_np::criterion), Neighborhood_criterion::DIMENSIONALITY);
-  s.angle_tolerance = choose_parameter(get_parameter(np, internal_np::angle_tolerance), DEFAULT_ANGLE_TOLERANCE);
+  s.angle_tolerance = choose_parameter(get_parameter(np, internal_np::angle_tolerance), defaults::ANGLE_TOLERANCE);
   s.threads = number_of_threads(np);
   s.instructions = choose_parameter(get_parameter(np, internal_np::vector_instructions), widest_vector_instructions());
   if(!has_vector_instructions(s.instructions))
     throw std::invalid_argument(std::string("this processor cannot run the vector instructions ") +
-                                vector_instructions_name(s.instructions));
+                                internal::vector_instructions_name(s.instructions));
   if(!(s.k_min >= 1 && s.k_min <= s.k_max))
     throw std::invalid_argument("the neighborhood sizes must satisfy 1 <= k_min <= k_max, got k_min = " +
                                 std::to_string(s.k_min) + ", k_max = " + std::to_string(s.k_max));

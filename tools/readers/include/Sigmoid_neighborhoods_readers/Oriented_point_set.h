@@ -7,7 +7,7 @@
 #define SIGMOID_NEIGHBORHOODS_READERS_ORIENTED_POINT_SET_H
 
 #include <Sigmoid_neighborhoods_readers/Normal_options.h>
-#include <CGAL/Sigmoid_neighborhoods/Normal_estimation_method.h>
+#include <CGAL/Sigmoid_neighborhoods/defaults.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -45,7 +45,7 @@ struct Oriented_point_set
   std::vector<double> gps_times;
   bool is_mesh = false;                 ///< read from faces; normals are vertex normals unless estimated
   bool normals_estimated = false;       ///< estimated by `estimate_normals()` (`Normal_options`)
-  Normal_estimation_method estimation_method = DEFAULT_NORMAL_ESTIMATION_METHOD; ///< when estimated
+  Normal_estimation_method estimation_method = defaults::NORMAL_ESTIMATION_METHOD; ///< when estimated
   unsigned int estimation_neighbors = 0;  ///< the `k` of the estimation and orientation, when estimated
   Normal_orientation orientation = Normal_orientation::NONE; ///< of estimated normals
   std::size_t orientation_components = 0; ///< the trees of `Normal_orientation::SPANNING_FOREST`

@@ -5,7 +5,7 @@
 //
 // What CGAL 5.5's readers need around them to read untrusted files: their explanations on
 // std::cerr kept for a one-line message, and the PLY header checks that they leave out (found by
-// fuzzing). The counts of every format are bounded by the bytes left (Lidar_io::internal::Byte_budget.h): the OFF loop
+// fuzzing). The counts of every format are bounded by the bytes left (Byte_budget.h): the OFF loop
 // that replaces `CGAL::IO::read_OFF()` in read_off.h, check_ply_counts.h, read_stl.h.
 
 #ifndef SIGMOID_NEIGHBORHOODS_READERS_INTERNAL_CGAL_5_5_WORKAROUNDS_H

@@ -7,7 +7,7 @@
 #define SIGMOID_NEIGHBORHOODS_READERS_INTERNAL_CHECK_PLY_COUNTS_H
 
 #include <Sigmoid_neighborhoods_readers/Input_error.h>
-#include <Lidar_io/internal/Byte_budget.h>
+#include <Sigmoid_neighborhoods_readers/internal/Byte_budget.h>
 #include <Sigmoid_neighborhoods_readers/internal/input_file.h>
 
 #include <CGAL/IO/PLY/PLY_reader.h>
@@ -123,7 +123,7 @@ inline bool ply_file_ends(std::istream& in)
 // bytes left before its entries are read (and none is stored). False when the file ends or a value
 // is malformed. `describe_list(length)` starts the reason of a refused length.
 template <typename Describe>
-bool read_ply_property(std::istream& in, const Ply_property_layout& property, bool ascii, Lidar_io::internal::Byte_budget& budget,
+bool read_ply_property(std::istream& in, const Ply_property_layout& property, bool ascii, Byte_budget& budget,
                        const Describe& describe_list)
 {
   if(!property.is_list())
@@ -178,12 +178,12 @@ inline void check_ply_counts(const Input_file& file)
     throw Input_error(ply_error("no end_header line"));
   const std::streamoff header_end = in.tellg();
   const std::uintmax_t read = header_end > 0 ? std::uintmax_t(header_end) : file.size;
-  const Lidar_io::internal::Byte_budget after_header(file.size, read < file.size ? file.size - read : 0);
+  const Byte_budget after_header(file.size, read < file.size ? file.size - read : 0);
 
   // The header's counts, each item at least its properties' numbers.
   std::vector<std::vector<Ply_property_layout>> layouts(reader.number_of_elements());
   std::vector<std::uintmax_t> item_bytes(reader.number_of_elements(), 0);
-  Lidar_io::internal::Byte_budget header = after_header;
+  Byte_budget header = after_header;
   for(std::size_t e = 0; e < reader.number_of_elements(); ++e)
   {
     CGAL::IO::internal::PLY_element& element = reader.element(e);
@@ -200,7 +200,7 @@ inline void check_ply_counts(const Input_file& file)
   }
 
   // The body: binary elements without lists are skipped whole.
-  Lidar_io::internal::Byte_budget body = after_header;
+  Byte_budget body = after_header;
   for(std::size_t e = 0; e < reader.number_of_elements(); ++e)
   {
     CGAL::IO::internal::PLY_element& element = reader.element(e);

@@ -34,13 +34,13 @@ inline Normal_estimation_method estimation_method(Normal_source source)
 {
   return source == Normal_source::JET ? Normal_estimation_method::JET
          : source == Normal_source::PCA ? Normal_estimation_method::PCA
-                                        : DEFAULT_NORMAL_ESTIMATION_METHOD;
+                                        : defaults::NORMAL_ESTIMATION_METHOD;
 }
 
 // The fewest neighbors a fit of `method` takes (estimate_normals()'s precondition, degree 2 jets).
 inline unsigned int fewest_estimation_neighbors(Normal_estimation_method method)
 {
-  return method == Normal_estimation_method::PCA ? 2u : (DEFAULT_JET_DEGREE + 1) * (DEFAULT_JET_DEGREE + 2) / 2 - 1;
+  return method == Normal_estimation_method::PCA ? 2u : (defaults::JET_DEGREE + 1) * (defaults::JET_DEGREE + 2) / 2 - 1;
 }
 
 // Estimates and orients the normals of `out` on one k-nearest-neighbor structure, computed once

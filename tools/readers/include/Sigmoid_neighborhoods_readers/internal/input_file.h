@@ -23,7 +23,7 @@ namespace Sigmoid_neighborhoods {
 namespace internal {
 
 // A file about to be read: its name, its format (the lower-case extension) and its size, which
-// bounds every count the file announces (Lidar_io::internal::Byte_budget).
+// bounds every count the file announces (Byte_budget).
 struct Input_file
 {
   std::string name;

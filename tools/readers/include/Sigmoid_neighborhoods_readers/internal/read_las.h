@@ -7,18 +7,15 @@
 #define SIGMOID_NEIGHBORHOODS_READERS_INTERNAL_READ_LAS_H
 
 #include <Sigmoid_neighborhoods_readers/Input_error.h>
-#include <Lidar_io/Las_header.h>
 #include <Sigmoid_neighborhoods_readers/Oriented_point_set.h>
-#include <Lidar_io/little_endian.h>
-#include <Lidar_io/internal/Byte_budget.h>
 #include <Sigmoid_neighborhoods_readers/internal/input_file.h>
-#include <Lidar_io/internal/las_record_blocks.h>
-#include <Lidar_io/internal/read_las_header.h>
+#include <Lidar_io/Las_header.h>
+#include <Lidar_io/little_endian.h>
+#include <Lidar_io/read_las_records.h>
 
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <fstream>
 #include <string>
 #include <type_traits>
 
@@ -53,19 +50,16 @@ struct Keep_every_las_point
 template <typename Keep = Keep_every_las_point>
 void read_las(const Input_file& file, Oriented_point_set& out, Keep keep = Keep(), unsigned int threads = 0)
 {
-  std::ifstream in(file.name, std::ios::binary);
-  if(!in)
-    throw Input_error("cannot open the file");
-  const Lidar_io::Las_header h =
-    Lidar_io::internal::read_las_header(in, file.size == Lidar_io::internal::Byte_budget::UNKNOWN_SIZE ? Lidar_io::internal::las_file_size(file.name) : file.size);
+  // the header first, to size the vectors; read_las_records() reads it again with the records
+  const Lidar_io::Las_header h = Lidar_io::read_las_header(file.name);
 
-  // At most one point per record of the file (Lidar_io::read_las_header() checked it): sized to the file,
+  // At most one point per record of the file (read_las_header() checked it): sized to the file,
   // unless a filter keeps a part of it. A LAZ file's count is checked against its chunk table, not
   // bounded by its size: its vectors grow as its chunks are decoded.
   if(std::is_same<Keep, Keep_every_las_point>::value && !h.compressed)
     reserve_las_points(out, std::size_t(h.point_count), h.has_gps_time());
 
-  Lidar_io::internal::for_each_las_record_block(in, h, threads, [&](std::size_t first, const unsigned char* records, std::size_t count) {
+  auto append = [&](std::size_t first, const unsigned char* records, std::size_t count) {
     for(std::size_t i = 0; i < count; ++i)
     {
       const unsigned char* r = records + i * h.record_length;
@@ -74,8 +68,8 @@ void read_las(const Input_file& file, Oriented_point_set& out, Keep keep = Keep(
       {
         xyz[c] = double(Lidar_io::load_little_endian<std::int32_t>(r + 4 * c)) * h.scale[c] + h.offset[c];
         if(!std::isfinite(xyz[c]))
-          throw Input_error(Lidar_io::internal::las_error("point " + std::to_string(first + i) +
-                                      " has a non-finite coordinate after scale and offset"));
+          throw Input_error("cannot parse the file as las (point " + std::to_string(first + i) +
+                            " has a non-finite coordinate after scale and offset)");
       }
       if(!keep(first + i, xyz))
         continue;
@@ -97,7 +91,8 @@ void read_las(const Input_file& file, Oriented_point_set& out, Keep keep = Keep(
       if(h.has_gps_time())
         out.gps_times.push_back(Lidar_io::load_little_endian<double>(r + h.gps_time_offset()));
     }
-  });
+  };
+  Lidar_io::read_las_records(file.name, append, threads);
 }
 
 } // namespace internal

@@ -7,7 +7,7 @@
 #define SIGMOID_NEIGHBORHOODS_READERS_INTERNAL_READ_OFF_H
 
 #include <Sigmoid_neighborhoods_readers/Oriented_point_set.h>
-#include <Lidar_io/internal/Byte_budget.h>
+#include <Sigmoid_neighborhoods_readers/internal/Byte_budget.h>
 #include <Sigmoid_neighborhoods_readers/internal/Polygon_soup.h>
 #include <Sigmoid_neighborhoods_readers/internal/input_file.h>
 
@@ -26,7 +26,7 @@ namespace internal {
 // What CGAL's scanner leaves in a face's corner count when it cannot read one.
 constexpr std::size_t UNREAD_CORNER_COUNT = std::size_t(-1);
 
-// The bytes an OFF item takes at least, to bound the counts by the bytes left (Lidar_io::internal::Byte_budget). The
+// The bytes an OFF item takes at least, to bound the counts by the bytes left (Byte_budget). The
 // header's counts are bounded at one byte a vertex or face, so that a file merely cut short is one
 // that cannot be parsed, as CGAL says. Once read, a vertex has taken a line of 3 numbers in ASCII,
 // 3 floats in binary; a face's corner count and each corner, a number of one character in ASCII,
@@ -53,9 +53,9 @@ inline bool read_off_soup(const Input_file& file, Polygon_soup& soup)
   const std::uintmax_t number_bytes = binary ? OFF_BINARY_NUMBER_BYTES : OFF_ASCII_NUMBER_BYTES;
   const std::streamoff header_end = is.tellg();
   const std::uintmax_t read = header_end > 0 ? std::uintmax_t(header_end) : 0;
-  Lidar_io::internal::Byte_budget budget(file.size, read < file.size ? file.size - read : 0);
+  Byte_budget budget(file.size, read < file.size ? file.size - read : 0);
   {
-    Lidar_io::internal::Byte_budget header = budget;
+    Byte_budget header = budget;
     header.check(vertices, OFF_ITEM_BYTES, [&](const std::string& excess) {
       return "the header announces " + std::to_string(vertices) + " vertices" + excess;
     });

@@ -6,7 +6,7 @@
 #ifndef SIGMOID_NEIGHBORHOODS_READERS_INTERNAL_READ_STL_H
 #define SIGMOID_NEIGHBORHOODS_READERS_INTERNAL_READ_STL_H
 
-#include <Lidar_io/internal/Byte_budget.h>
+#include <Sigmoid_neighborhoods_readers/internal/Byte_budget.h>
 #include <Sigmoid_neighborhoods_readers/internal/Polygon_soup.h>
 #include <Sigmoid_neighborhoods_readers/internal/input_file.h>
 
@@ -48,7 +48,7 @@ inline bool read_stl_soup(const Input_file& file, Polygon_soup& soup)
     {
       const std::uint32_t triangles = std::uint32_t(count[0]) | std::uint32_t(count[1]) << 8 |
                                       std::uint32_t(count[2]) << 16 | std::uint32_t(count[3]) << 24;
-      const Lidar_io::internal::Byte_budget budget(file.size, file.size - (STL_HEADER_BYTES + STL_COUNT_BYTES));
+      const Byte_budget budget(file.size, file.size - (STL_HEADER_BYTES + STL_COUNT_BYTES));
       budget.check(triangles, STL_TRIANGLE_BYTES, [&](const std::string& excess) {
         return "cannot parse the file as stl (the header announces " + std::to_string(triangles) + " triangles" +
                excess + ")";

@@ -1,14 +1,11 @@
 // Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Author(s): Sigmoid_neighborhoods contributors
+// The noise and the error measure of the denoising experiments (SPEC §7): Gaussian offsets along
+// the normals, and the mean squared error of normals against reference normals.
 
-#ifndef CGAL_SIGMOID_NEIGHBORHOODS_DENOISING_UTILITIES_H
-#define CGAL_SIGMOID_NEIGHBORHOODS_DENOISING_UTILITIES_H
-
-#include <CGAL/Sigmoid_neighborhoods/internal/Neighbor_lists.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/Oriented_points.h>
-#include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
+#ifndef SIGMOID_NEIGHBORHOODS_TOOL_EXPERIMENTS_NORMAL_NOISE_H
+#define SIGMOID_NEIGHBORHOODS_TOOL_EXPERIMENTS_NORMAL_NOISE_H
 
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Named_function_parameters.h>
@@ -17,49 +14,18 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <iterator>
 #include <random>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
-/*!
-  \ingroup PkgSigmoidNeighborhoodsNormalFilter
-  \brief the mean over all points of their mean distance to their `k` nearest other points: the
-  spacing `l` of the denoising experiment with `k = 6` (SPEC §7), the scale `m` of the normal filter
-  with `k = 12`.
-
-  Unlike `CGAL::compute_average_spacing()`, which divides the sum of the `k` distances by `k + 1`
-  (the point itself counts), this is the mean of the `k` distances. Per-point means are summed in
-  the order of `points`: the value is the same for any number of threads.
-
-  \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag`
-  \tparam PointRange a model of `ConstRange` whose value type is the key type of `point_map`
-  \tparam NamedParameters a sequence of named parameters
-  \param points the points
-  \param k the number of neighbors of each point
-  \param np optional: `point_map` (CGAL), as in `compute_optimal_sigmoid_neighborhoods()`
-  \pre `k >= 1`, at least `k + 1` points with finite coordinates; otherwise `std::invalid_argument`
-*/
-template <typename ConcurrencyTag, typename PointRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
-double compute_mean_neighbor_distance(const PointRange& points, unsigned int k,
-                                      const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
-{
-  typedef Point_set_processing_3_np_helper<PointRange, CGAL_NP_CLASS> NP_helper;
-  const unsigned int threads = internal::kernel_threads<ConcurrencyTag>(internal::number_of_threads(np));
-  const std::vector<internal::Double_point> copy =
-    internal::checked_points(points, NP_helper::get_const_point_map(points, np), threads);
-  return internal::mean_neighbor_distance<ConcurrencyTag>(internal::Neighbor_query(copy, threads), k,
-                                                          internal::number_of_threads(np));
-}
-
-/*!
-  \ingroup PkgSigmoidNeighborhoodsNormalFilter
-  \brief moves every point along its unit normal by a Gaussian offset: `p_i <- p_i + e_i n_i`,
+/*
+  moves every point along its unit normal by a Gaussian offset: `p_i <- p_i + e_i n_i`,
   `e_i ~ N(0, standard_deviation^2)` (SPEC §7).
 
   The offsets are drawn in the order of `points`, one per point, from `std::mt19937_64(seed)`
@@ -107,9 +73,8 @@ void add_normal_noise(PointRange& points, double standard_deviation, std::uint64
   }
 }
 
-/*!
-  \ingroup PkgSigmoidNeighborhoodsNormalFilter
-  `|n - m|^2` for two vectors whose coordinates are read as `v[0]`, `v[1]`, `v[2]`
+/*
+    `|n - m|^2` for two vectors whose coordinates are read as `v[0]`, `v[1]`, `v[2]`
   (a CGAL `Vector_3`, `Eigen::Vector3d`).
 */
 template <typename Vector1, typename Vector2>
@@ -121,9 +86,8 @@ double normal_squared_error(const Vector1& n, const Vector2& m)
   return dx * dx + dy * dy + dz * dz;
 }
 
-/*!
-  \ingroup PkgSigmoidNeighborhoodsNormalFilter
-  \brief the mean squared error `(1/n) sum_i |n_i - m_i|^2` of normals against reference normals
+/*
+  the mean squared error `(1/n) sum_i |n_i - m_i|^2` of normals against reference normals
   (SPEC §7), summed in order. For unit normals it lies in `[0, 4]`: 0 for equal normals, 4 for
   opposite ones.
   \pre both ranges hold the same number `n >= 1` of vectors; otherwise `std::invalid_argument`
@@ -147,4 +111,4 @@ double normal_mse(const VectorRange1& reference, const VectorRange2& normals)
 } // namespace Sigmoid_neighborhoods
 } // namespace CGAL
 
-#endif // CGAL_SIGMOID_NEIGHBORHOODS_DENOISING_UTILITIES_H
+#endif // SIGMOID_NEIGHBORHOODS_TOOL_EXPERIMENTS_NORMAL_NOISE_H

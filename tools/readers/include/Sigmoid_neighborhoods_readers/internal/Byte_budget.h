@@ -3,10 +3,10 @@
 //
 // Author(s): Sigmoid_neighborhoods contributors
 
-#ifndef LIDAR_IO_INTERNAL_BYTE_BUDGET_H
-#define LIDAR_IO_INTERNAL_BYTE_BUDGET_H
+#ifndef SIGMOID_NEIGHBORHOODS_READERS_INTERNAL_BYTE_BUDGET_H
+#define SIGMOID_NEIGHBORHOODS_READERS_INTERNAL_BYTE_BUDGET_H
 
-#include <Lidar_io/Input_error.h>
+#include <Sigmoid_neighborhoods_readers/Input_error.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -14,7 +14,8 @@
 #include <string>
 
 /// \cond SKIP_IN_MANUAL
-namespace Lidar_io {
+namespace CGAL {
+namespace Sigmoid_neighborhoods {
 namespace internal {
 
 // What is left of a file being read, to bound every count the file announces (items of an element,
@@ -59,7 +60,8 @@ private:
 };
 
 } // namespace internal
-} // namespace Lidar_io
+} // namespace Sigmoid_neighborhoods
+} // namespace CGAL
 /// \endcond
 
-#endif // LIDAR_IO_INTERNAL_BYTE_BUDGET_H
+#endif // SIGMOID_NEIGHBORHOODS_READERS_INTERNAL_BYTE_BUDGET_H

@@ -1,13 +1,14 @@
 // Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Author(s): Sigmoid_neighborhoods contributors
+// The paper's statistics of an evaluation (Tables 2, 3, Figures 4, 5): sums of the package's
+// Point_evaluation records, merged exactly across shards.
 
-#ifndef CGAL_SIGMOID_NEIGHBORHOODS_EVALUATION_STATISTICS_H
-#define CGAL_SIGMOID_NEIGHBORHOODS_EVALUATION_STATISTICS_H
+#ifndef SIGMOID_NEIGHBORHOODS_TOOL_EVALUATION_STATISTICS_H
+#define SIGMOID_NEIGHBORHOODS_TOOL_EVALUATION_STATISTICS_H
 
 #include <CGAL/Sigmoid_neighborhoods/Point_evaluation.h>
-#include <CGAL/Sigmoid_neighborhoods/search_parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/defaults.h>
 
 #include <algorithm>
 #include <array>
@@ -20,8 +21,7 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
-/*!
-  \ingroup PkgSigmoidNeighborhoodsEvaluation
+/*
   mergeable statistics of `E_dim` under one weighting (SPEC §6): counts, sums, extremes, labels and
   the histogram of the chosen `k`. Two disjoint parts merge into exactly the statistics of the whole
   (counts, extremes, histograms); sums agree up to rounding, and exactly when merged in the same order.
@@ -41,7 +41,7 @@ struct Error_statistics
   std::array<std::size_t, 3> labels{{0, 0, 0}}; ///< linear, planar, scattered
   std::vector<std::size_t> k_histogram;         ///< index `k - k_min`; empty for a fixed `k`
 
-  /*!
+  /*
     adds one point: a failure when `error` is not finite, otherwise its error, its `label` and,
     when `k_histogram` is not empty, its `k` (counted at `k - k_min`).
   */
@@ -63,7 +63,7 @@ struct Error_statistics
       ++k_histogram[k - k_min];
   }
 
-  /*!
+  /*
     adds the statistics of disjoint points.
     \pre `other.k_histogram` has the size of `k_histogram`, otherwise `std::invalid_argument`
   */
@@ -95,8 +95,7 @@ struct Error_statistics
   }
 };
 
-/*!
-  \ingroup PkgSigmoidNeighborhoodsEvaluation
+/*
   mergeable statistics of a model or a repository under the weightings of the paper's Section 5:
   Table 2 (`E_dim` per weighting), Table 3 (lowering `a*`, `b*`), Figure 4 (`(a*, b*)` split by `k*`)
   and Figure 5 (`k*`).
@@ -125,7 +124,7 @@ struct Evaluation_statistics
 
   /// empty statistics without grids, to be assigned; only statistics with equal grids merge.
   Evaluation_statistics() = default;
-  /*!
+  /*
     empty statistics of the evaluation with the sizes `{k_min_, ..., k_max_}` and the grids `a`, `b`
     (sorted and deduplicated here), as given to `evaluate_sigmoid_neighborhoods()`.
     \pre `k_min_ <= k_max_` (not checked)
@@ -176,7 +175,7 @@ struct Evaluation_statistics
     ++b_lowering[std::size_t(e.b_lowering)];
   }
 
-  /*!
+  /*
     adds the statistics of disjoint points (another shard, model or repository).
     \pre equal `k_min`, `k_max`, `a_grid` and `b_grid`, otherwise `std::invalid_argument`
   */
@@ -219,4 +218,4 @@ struct Evaluation_statistics
 } // namespace Sigmoid_neighborhoods
 } // namespace CGAL
 
-#endif // CGAL_SIGMOID_NEIGHBORHOODS_EVALUATION_STATISTICS_H
+#endif // SIGMOID_NEIGHBORHOODS_TOOL_EVALUATION_STATISTICS_H

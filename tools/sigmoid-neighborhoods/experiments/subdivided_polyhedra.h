@@ -1,10 +1,10 @@
 // Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Author(s): Sigmoid_neighborhoods contributors
+// The generated models of the paper's Table 4: a cube and an octahedron cut into small triangles.
 
-#ifndef CGAL_SIGMOID_NEIGHBORHOODS_SUBDIVIDED_POLYHEDRA_H
-#define CGAL_SIGMOID_NEIGHBORHOODS_SUBDIVIDED_POLYHEDRA_H
+#ifndef SIGMOID_NEIGHBORHOODS_TOOL_EXPERIMENTS_SUBDIVIDED_POLYHEDRA_H
+#define SIGMOID_NEIGHBORHOODS_TOOL_EXPERIMENTS_SUBDIVIDED_POLYHEDRA_H
 
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -20,8 +20,7 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
-/// \cond SKIP_IN_MANUAL
-namespace internal {
+namespace subdivision {
 
 // Points of shared edges are computed from the same integers on every face, so equal points are
 // bitwise equal (up to the sign of zero) and CGAL's soup repair merges them.
@@ -37,12 +36,10 @@ template <typename PolygonMesh>
 using Mesh_point_t = typename boost::property_traits<
   typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type>::value_type;
 
-} // namespace internal
-/// \endcond
+} // namespace subdivision
 
-/*!
-  \ingroup PkgSigmoidNeighborhoodsNormalFilter
-  \brief adds to `mesh` the surface of the cube `[-1, 1]^3`, each face cut into `m x m` squares
+/*
+  adds to `mesh` the surface of the cube `[-1, 1]^3`, each face cut into `m x m` squares
   and each square into two triangles (the same diagonal everywhere), outward oriented:
   `6 m^2 + 2` vertices and `12 m^2` triangles. `m = 18` gives 1,946 vertices, the nearest to the
   1,906 of the cube of Yadav et al. (2018).
@@ -52,7 +49,7 @@ using Mesh_point_t = typename boost::property_traits<
 template <typename PolygonMesh>
 void make_subdivided_cube(unsigned int m, PolygonMesh& mesh)
 {
-  typedef internal::Mesh_point_t<PolygonMesh> Point;
+  typedef subdivision::Mesh_point_t<PolygonMesh> Point;
   if(m < 1)
     throw std::invalid_argument("make_subdivided_cube(): needs m >= 1");
   std::vector<Point> points;
@@ -83,12 +80,11 @@ void make_subdivided_cube(unsigned int m, PolygonMesh& mesh)
           faces.push_back({index(i, j), index(i + 1, j + 1), index(i, j + 1)});
         }
     }
-  internal::soup_to_mesh(points, faces, mesh);
+  subdivision::soup_to_mesh(points, faces, mesh);
 }
 
-/*!
-  \ingroup PkgSigmoidNeighborhoodsNormalFilter
-  \brief adds to `mesh` the surface of the octahedron `|x| + |y| + |z| = 1`, each face cut into
+/*
+  adds to `mesh` the surface of the octahedron `|x| + |y| + |z| = 1`, each face cut into
   `m^2` equal triangles, outward oriented: `4 m^2 + 2` vertices and `8 m^2` triangles. `m = 64`
   gives 16,386 vertices, the nearest to the 16,395 of the octahedron of Yadav et al. (2018).
   \tparam PolygonMesh a model of `MutableFaceGraph` with an internal point property map
@@ -97,7 +93,7 @@ void make_subdivided_cube(unsigned int m, PolygonMesh& mesh)
 template <typename PolygonMesh>
 void make_subdivided_octahedron(unsigned int m, PolygonMesh& mesh)
 {
-  typedef internal::Mesh_point_t<PolygonMesh> Point;
+  typedef subdivision::Mesh_point_t<PolygonMesh> Point;
   if(m < 1)
     throw std::invalid_argument("make_subdivided_octahedron(): needs m >= 1");
   std::vector<Point> points;
@@ -128,10 +124,10 @@ void make_subdivided_octahedron(unsigned int m, PolygonMesh& mesh)
               add(index[i + 1][j], index[i + 1][j + 1], index[i][j + 1]);
           }
       }
-  internal::soup_to_mesh(points, faces, mesh);
+  subdivision::soup_to_mesh(points, faces, mesh);
 }
 
 } // namespace Sigmoid_neighborhoods
 } // namespace CGAL
 
-#endif // CGAL_SIGMOID_NEIGHBORHOODS_SUBDIVIDED_POLYHEDRA_H
+#endif // SIGMOID_NEIGHBORHOODS_TOOL_EXPERIMENTS_SUBDIVIDED_POLYHEDRA_H
