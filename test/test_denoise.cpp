@@ -392,7 +392,7 @@ double mean_sphere_distance(const Points& points, double radius)
 {
   double sum = 0.;
   for(const auto& p : points)
-    sum += std::abs(std::sqrt(CGAL::squared_distance(p.first, CGAL::ORIGIN)) - radius);
+    sum += std::abs(std::sqrt((p.first - CGAL::ORIGIN).squared_length()) - radius);
   return sum / double(points.size());
 }
 

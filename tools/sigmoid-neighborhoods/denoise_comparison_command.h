@@ -31,7 +31,7 @@ inline const char* DENOISE_COMPARISON_USAGE =
   "          models of CGAL's data and ../shared/data/clean that exist (see the manual)\n"
   "  every model gets noise of each level (sd in units of l, the mean distance to 6 neighbors) along its\n"
   "  normals and isotropically, PCA normals on 12 neighbors oriented like the clean ones, then: the\n"
-  "  package's denoise_point_set (defaults; adaptive; (a*, b*) vote; in place; the authors' stage 3), CGAL's jet_smooth_point_set (k 18) and\n"
+  "  package's denoise_point_set (defaults; the plane update; adaptive; (a*, b*) vote; in place; the authors' stage 3), CGAL's jet_smooth_point_set (k 18) and\n"
   "  bilateral_smooth_point_set (k 18, sharpness 25 degrees, 3 iterations)\n"
   "  --fixed-iterations: references, the package's defaults without the stopping rule after each of these\n"
   "          iteration counts (not ranked, not drawn: what the best stopping rule could give)\n"
@@ -95,7 +95,8 @@ inline void write_comparison_table(std::ostream& out, const std::vector<Comparis
       << "Settings: noise of standard deviation `level * l`, along the clean normals or isotropic (that deviation "
          "on each axis); initial normals by PCA on 12 neighbors, each turned to agree with the clean normal. "
          "*package*: `denoise_point_set()` with its defaults (at most 50 iterations, cut-off 0.9, tau 0.25, "
-         "alpha 0.1, stopped at the estimated noise level); *adaptive*: the same with "
+         "alpha 0.1, smooth points onto their jets, stopped at the estimated noise level); *plane update*: the same "
+         "with `jet_vertex_update(false)`, every planar point towards the weighted mean plane; *adaptive*: the same with "
          "`adaptive_neighborhood_size(true)`; *(a\\*, b\\*) vote*: the same with `optimal_vote_weights(true)`, "
          "stage 1's votes weighted by each point's optimal sigmoid; *in place*: the same with `in_place_updates(true)` (the authors' "
          "Gauss-Seidel order); *authors' stage 3*: `authors_vertex_update(true)` and `rank_threshold(0)`, the "
@@ -166,7 +167,7 @@ inline void write_comparison_table(std::ostream& out, const std::vector<Comparis
 
 inline void write_comparison_csv(std::ostream& out, const std::vector<Comparison_row>& rows)
 {
-  out << "model,noise,level,spacing,points,method,mean_distance,rms_distance,normal_mse,seconds,note\n";
+  out << "model,noise,level,spacing,points,method,mean_distance,rms_distance,normal_mse,seconds,note,max_distance\n";
   for(const auto& r : rows)
     for(const auto& m : r.methods)
     {
@@ -174,7 +175,7 @@ inline void write_comparison_csv(std::ostream& out, const std::vector<Comparison
           << r.points << ",\"" << m.method << "\"," << number17(m.mean_distance) << ',' << number17(m.rms_distance) << ',';
       if(m.normal_mse >= 0.)
         out << number17(m.normal_mse);
-      out << ',' << number17(m.seconds) << ",\"" << m.note << "\"\n";
+      out << ',' << number17(m.seconds) << ",\"" << m.note << "\"," << number17(m.max_distance) << '\n';
     }
 }
 

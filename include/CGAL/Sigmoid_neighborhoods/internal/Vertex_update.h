@@ -58,7 +58,7 @@ struct Vertex_update_settings
   double jet_feature_fraction = 0.5;
   double jet_flat_spread = 0.;      // a window whose mean 1 - n_i . n_j is below it is flat: the planar rule
   double jet_minimum_weight = 8.;   // the fit's total weight below which it is degenerate
-  double jet_minimum_rcond = 1e-6;  // the normal equations' reciprocal condition below which too
+  double jet_minimum_pivot = 1e-6;  // the normal equations' smallest LDLT pivot per largest below which too
 };
 
 struct Vertex_update
@@ -151,7 +151,10 @@ bool jet_height(const PointVector& points, const std::vector<Eigen::Vector3d>& n
   if(!(total >= s.jet_minimum_weight))
     return false;
   const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> solve(normal_matrix);
-  if(solve.info() != Eigen::Success || !(solve.rcond() >= s.jet_minimum_rcond))
+  // The pivots of the (pivoting) factorisation: a direction of the six without data, such as y on
+  // points along a line, leaves a pivot near 0 (Eigen's rcond() estimate misses exact zeros).
+  const Vector6 pivots = solve.vectorD();
+  if(solve.info() != Eigen::Success || !(pivots.minCoeff() > s.jet_minimum_pivot * pivots.maxCoeff()))
     return false;
   height = solve.solve(right)[0];
   return std::isfinite(height);
