@@ -120,7 +120,8 @@ TEST_CASE("denoise: a noisy plane becomes flat, moving along the normal only", "
   Points points = noisy_plane(30, sigma, 1);
   const Points input = points;
   const double before = rms_z(points);
-  const SN::Point_set_denoising_summary s = SN::denoise_point_set<CGAL::Sequential_tag>(points, maps());
+  const SN::Point_set_denoising_summary s =
+    SN::denoise_point_set<CGAL::Sequential_tag>(points, SNP::jet_vertex_update(false, maps()));
   CHECK(s.points == 900);
   // The estimated noise level is the true one, up to the sample and the fits.
   CHECK(s.noise_estimate > 0.8 * sigma);
@@ -150,7 +151,8 @@ TEST_CASE("denoise: on a sphere the iterations stop at the noise level", "[denoi
   const double sigma = 0.3;
   Points points = noisy_sphere(n, 12., sigma, 11);
   const Points input = points;
-  const auto s = SN::denoise_point_set<CGAL::Sequential_tag>(points, maps());
+  // the planar rule's drift; the jet update's smooth points do not drift (the tests [jet] below)
+  const auto s = SN::denoise_point_set<CGAL::Sequential_tag>(points, SNP::jet_vertex_update(false, maps()));
   double squares = 0.;
   for(std::size_t i = 0; i < points.size(); ++i)
     squares += CGAL::squared_distance(points[i].first, input[i].first);
@@ -163,16 +165,18 @@ TEST_CASE("denoise: on a sphere the iterations stop at the noise level", "[denoi
   // One iteration less has not reached it.
   Points fewer = input;
   SN::denoise_point_set<CGAL::Sequential_tag>(
-    fewer, SNP::stop_at_noise_level(false, CGAL::parameters::number_of_iterations(s.iterations - 1)
-                                             .point_map(Point_map())
-                                             .normal_map(Normal_map())));
+    fewer, SNP::jet_vertex_update(false, SNP::stop_at_noise_level(false, CGAL::parameters::number_of_iterations(
+                                                                            s.iterations - 1)
+                                                                            .point_map(Point_map())
+                                                                            .normal_map(Normal_map()))));
   squares = 0.;
   for(std::size_t i = 0; i < points.size(); ++i)
     squares += CGAL::squared_distance(fewer[i].first, input[i].first);
   CHECK(std::sqrt(squares / double(n)) < SN::internal::DISCREPANCY_FACTOR * s.noise_estimate);
   // Without the rule all iterations run.
   Points all = input;
-  const auto s_all = SN::denoise_point_set<CGAL::Sequential_tag>(all, SNP::stop_at_noise_level(false, maps()));
+  const auto s_all = SN::denoise_point_set<CGAL::Sequential_tag>(
+    all, SNP::stop_at_noise_level(false, SNP::jet_vertex_update(false, maps())));
   CHECK(s_all.iterations == SN::defaults::FILTER_ITERATIONS);
   CHECK_FALSE(s_all.stopped_at_noise_level);
   CHECK(s_all.noise_estimate == 0.);
@@ -381,4 +385,98 @@ TEST_CASE("denoise: the optimal sigmoid weights in the vote", "[denoise][paralle
                     Catch::Contains("optimal vote weights"));
   CHECK_NOTHROW(SN::denoise_point_set<CGAL::Sequential_tag>(
     few, SNP::optimal_vote_weights(true, SNP::k_min(4, SNP::k_max(10, maps())))));
+}
+
+namespace {
+
+double mean_sphere_distance(const Points& points, double radius)
+{
+  double sum = 0.;
+  for(const auto& p : points)
+    sum += std::abs(std::sqrt((p.first - CGAL::ORIGIN).squared_length()) - radius);
+  return sum / double(points.size());
+}
+
+} // namespace
+
+TEST_CASE("denoise: the jet update follows a curved surface closer than the plane update", "[denoise][jet]")
+{
+  // A sphere of radius 6 at spacing about 1: stage 1 turns its normals into facets, stage 2 calls
+  // many of them edges, and the planar rule pulls the points into the chords.
+  const Points input = noisy_sphere(500, 6., 0.3, 21);
+  Points jet = input, plane = input;
+  const auto s = SN::denoise_point_set<CGAL::Sequential_tag>(jet, maps());
+  SN::denoise_point_set<CGAL::Sequential_tag>(plane, SNP::jet_vertex_update(false, maps()));
+  const double before = mean_sphere_distance(input, 6.), after = mean_sphere_distance(jet, 6.);
+  CHECK(after < 0.6 * before);
+  CHECK(after < 0.85 * mean_sphere_distance(plane, 6.));
+  CHECK(s.smooth > input.size() / 2);
+  CHECK(s.degenerate_fits == 0);
+  CHECK(s.noise_estimate > 0.);
+}
+
+TEST_CASE("denoise: the jet update keeps a cube corner's edges", "[denoise][jet]")
+{
+  // The corner's faces meet at 90 degrees: the sigmoid keeps each fit on its face, and the edge and
+  // corner points keep the restricted quadratic error metrics.
+  const Points input = noisy_corner(14, 0.3, 2);
+  Points jet = input, plane = input;
+  SN::denoise_point_set<CGAL::Sequential_tag>(jet, maps());
+  SN::denoise_point_set<CGAL::Sequential_tag>(plane, SNP::jet_vertex_update(false, maps()));
+  const double before = mean_corner_distance(input);
+  CHECK(mean_corner_distance(jet) < 0.6 * before);
+  CHECK(mean_corner_distance(jet) < 1.25 * mean_corner_distance(plane));
+  // The points within one spacing of an edge (two coordinates near 0) end as close as the others.
+  double edge = 0., face = 0.;
+  std::size_t edges = 0, faces = 0;
+  for(std::size_t i = 0; i < input.size(); ++i)
+  {
+    const Point& p = input[i].first;
+    const int near = (std::abs(p.x()) < 1.) + (std::abs(p.y()) < 1.) + (std::abs(p.z()) < 1.);
+    (near >= 2 ? edge : face) += corner_distance(jet[i].first);
+    ++(near >= 2 ? edges : faces);
+  }
+  CHECK(edge / double(edges) < 1.5 * face / double(faces));
+}
+
+TEST_CASE("denoise: a degenerate jet fit leaves the point where it is", "[denoise][jet]")
+{
+  // 30 points on a line, moved along z: a stage-2 edge whose normals all agree (a smooth strip), whose
+  // quadric has no y: the fit's normal equations are singular and every point stays.
+  std::mt19937_64 engine(5);
+  std::normal_distribution<double> noise(0., 0.2);
+  Points line;
+  for(int i = 0; i < 30; ++i)
+    line.emplace_back(Point(i, 0, noise(engine)), Vector(0, 0, 1));
+  const Points input = line;
+  const auto s = SN::denoise_point_set<CGAL::Sequential_tag>(line, maps());
+  CHECK(s.degenerate_fits > 0);
+  CHECK(s.smooth == line.size());
+  CHECK(s.iterations == 1); // the stopping rule has no other point to watch
+  for(std::size_t i = 0; i < line.size(); ++i)
+    CHECK(line[i].first == input[i].first);
+  // The plane update moves them.
+  Points plane = input;
+  SN::denoise_point_set<CGAL::Sequential_tag>(plane, SNP::jet_vertex_update(false, maps()));
+  std::size_t moved = 0;
+  for(std::size_t i = 0; i < plane.size(); ++i)
+    moved += plane[i].first != input[i].first;
+  CHECK(moved > 0);
+}
+
+TEST_CASE("denoise: the jet update is bit-identical on 1 and 2 threads", "[denoise][jet][parallel]")
+{
+  for(const Points& input : {noisy_sphere(700, 7., 0.3, 22), noisy_corner(10, 0.3, 23)})
+  {
+    Points one = input, two = input, sequential = input;
+    const auto s1 = SN::denoise_point_set<CGAL::Parallel_tag>(one, SNP::number_of_threads(1, maps()));
+    const auto s2 = SN::denoise_point_set<CGAL::Parallel_tag>(two, SNP::number_of_threads(2, maps()));
+    SN::denoise_point_set<CGAL::Sequential_tag>(sequential, maps());
+    std::size_t equal = 0;
+    for(std::size_t i = 0; i < input.size(); ++i)
+      equal += (one[i] == two[i] && one[i] == sequential[i]);
+    CHECK(equal == input.size());
+    CHECK(s1.iterations == s2.iterations);
+    CHECK(s1.smooth == s2.smooth);
+  }
 }

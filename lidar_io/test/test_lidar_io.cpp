@@ -198,3 +198,20 @@ TEST_CASE("refusals: missing, empty and truncated files, with a message", "[las]
   CHECK_THROWS_AS(records_of(scratch("half.laz"), 1), Lidar_io::Input_error);
   CHECK_THROWS_AS(Lidar_io::read_tile_catalog(scratch("no_such_folder")), Lidar_io::Input_error);
 }
+
+TEST_CASE("refusals: a point count the file cannot hold, before anything is sized to it", "[las][bad-input]")
+{
+  // 2,000,000,000 records of 20 bytes announced in a file of 287 bytes
+  const std::string file = LIDAR_IO_TEST_DATA_DIR "/bad/las_count_beyond_file.las";
+  try
+  {
+    Lidar_io::read_las_header(file);
+    FAIL("the header was accepted");
+  }
+  catch(const Lidar_io::Input_error& e)
+  {
+    CHECK(std::string(e.what()) ==
+          "cannot parse the file as las (the header announces 2000000000 points of 20 bytes from byte 227, more than "
+          "a file of 287 bytes can hold: 60 bytes left, at least 20 bytes each)");
+  }
+}

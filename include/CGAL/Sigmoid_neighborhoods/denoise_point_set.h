@@ -38,9 +38,30 @@
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 
-
 /// \cond SKIP_IN_MANUAL
 namespace internal {
+// The jet update's normal weights (`jet_vertex_update`): the cosine sigmoid `sig_{a,b}` of the angle
+// between the filtered normals with `a` = 30 degrees, so that the neighboring facets into which
+// stage 1 turns a curved patch (at most the cut-off cone's 25.8 degrees apart) enter the fit ...
+constexpr double JET_FULL_WEIGHT_ANGLE = CGAL_PI / 6.;
+// ... and `b` = 60 degrees, so that the faces of a sharp edge do not.
+constexpr double JET_ZERO_WEIGHT_ANGLE = CGAL_PI / 3.;
+// An edge or corner of stage 2 is projected onto its jet when less than this share of its fit
+// window's weight lies beyond the normal sigmoid: then it is a strip of a curved patch, not a
+// feature (at a sharp edge, about half of the window lies on the other face).
+constexpr double JET_FEATURE_FRACTION = 0.5;
+// A smooth point whose fit neighbors' filtered normals turn from its own by less than this angle on
+// average (`1 - n_i * n_j` weighted as in the fit) lies on a flat patch: it keeps the planar rule,
+// which averages over the patch more than a quadric does (3 degrees).
+constexpr double JET_FLAT_ANGLE = CGAL_PI / 60.;
+// The radius `r` of the jet fit's distance weights `exp(-|p_j - p_i|^2 / r^2)` is
+// `JET_RADIUS_FACTOR * sqrt(sigma m)`, clamped to `[JET_MINIMUM_RADIUS, JET_MAXIMUM_RADIUS] * m`
+// (`sigma` the estimated noise level, `m` the scale): the noisier, the wider (0.3 and 0.6 `l` of noise
+// give about `1.6 m` and `2.2 m`); the lower bound because the estimate falls short where most
+// points lie on feature curves (benchmark/README.md).
+constexpr double JET_RADIUS_FACTOR = 3.2;
+constexpr double JET_MINIMUM_RADIUS = 1.75;
+constexpr double JET_MAXIMUM_RADIUS = 3.;
 // The bound `epsilon` on a point's distance to its input position, in units of the scale `m` (the
 // authors' code: `2 m`): a move beyond it is refused, so that no point wanders off.
 constexpr double DEVIATION_SCALE_FACTOR = 2.;
@@ -75,6 +96,8 @@ struct Point_set_denoising_summary
   std::size_t edges = 0;           ///< points classified edges in the last iteration
   std::size_t corners = 0;         ///< points classified corners in the last iteration
   std::size_t unclassified = 0;    ///< points whose cut-off neighborhood had no extent in the last iteration (they stayed)
+  std::size_t smooth = 0;          ///< with `jet_vertex_update`: points on smooth patches in the last iteration, projected onto their jets (among the classes above)
+  std::size_t degenerate_fits = 0; ///< with `jet_vertex_update`: jet fits too weak or ill-conditioned, whose points stayed
   std::size_t rank_deficient = 0;  ///< edge and corner solves in which the rank test dropped a direction
   std::size_t refused = 0;         ///< moves refused because they left the ball of radius `epsilon`
   double noise_estimate = 0.;      ///< the noise level `sigma` estimated from the input (see `stop_at_noise_level`)
@@ -99,6 +122,7 @@ struct Denoising_settings
   double rank_threshold = defaults::RANK_THRESHOLD;
   bool in_place = false;         // the authors' Gauss-Seidel order of stages 2 and 3, sequential
   bool authors_vertex_update = false;
+  bool jet_vertex_update = true;
   bool stop_at_noise_level = true;
   bool optimal_vote_weights = false; // stage 1 votes with sig_{a*_i, b*_i} of the input
   Search_settings search;            // the search of (a*_i, b*_i)
@@ -118,6 +142,7 @@ Denoising_settings denoising_settings(const NamedParameters& np)
   s.weight_radius = choose_parameter(get_parameter(np, internal_np::planar_weight_radius), 0.);
   s.in_place = choose_parameter(get_parameter(np, internal_np::in_place_updates), false);
   s.authors_vertex_update = choose_parameter(get_parameter(np, internal_np::authors_vertex_update), false);
+  s.jet_vertex_update = choose_parameter(get_parameter(np, internal_np::jet_vertex_update), true);
   s.stop_at_noise_level = choose_parameter(get_parameter(np, internal_np::stop_at_noise_level), true);
   s.optimal_vote_weights = choose_parameter(get_parameter(np, internal_np::optimal_vote_weights), false);
   if(s.optimal_vote_weights)
@@ -202,6 +227,13 @@ double estimate_noise_level(const Neighbor_query& query, unsigned int threads)
   return NOISE_LEVEL_PER_MEDIAN * residuals[n / 2];
 }
 
+// The radius of the jet fit's distance weights (JET_RADIUS_FACTOR).
+inline double jet_fit_radius(double noise_level, double scale)
+{
+  return std::clamp(JET_RADIUS_FACTOR * std::sqrt(noise_level * scale), JET_MINIMUM_RADIUS * scale,
+                    JET_MAXIMUM_RADIUS * scale);
+}
+
 // The iterations of the three stages on `input` (positions and normals replaced), with the ball
 // neighborhoods or `given`.
 template <typename ConcurrencyTag>
@@ -268,11 +300,21 @@ Point_set_denoising_summary denoise_all(Oriented_points& input, const Neighbor_l
   u.rank_threshold = s.rank_threshold;
   u.weighted_metrics = !s.authors_vertex_update;
   u.line_angles = s.filter.line_angles;
-  if(s.stop_at_noise_level)
+  u.jet_update = s.jet_vertex_update && !s.authors_vertex_update;
+  if(s.stop_at_noise_level || u.jet_update)
     summary.noise_estimate = estimate_noise_level<ConcurrencyTag>(query, s.filter.threads);
+  if(u.jet_update)
+  {
+    u.jet_radius = jet_fit_radius(summary.noise_estimate, summary.scale);
+    u.jet_sigmoid = Cosine_sigmoid(JET_FULL_WEIGHT_ANGLE, JET_ZERO_WEIGHT_ANGLE, s.filter.angle_tolerance);
+    u.jet_feature_fraction = JET_FEATURE_FRACTION;
+    u.jet_flat_spread = 1. - std::cos(JET_FLAT_ANGLE);
+  }
 
   std::vector<Vertex_class> classes(n, Vertex_class::UNCLASSIFIED);
   std::vector<std::uint32_t> rank_deficient(n, 0), refused(n, 0);
+  std::vector<unsigned char> smooth(n, 0);
+  std::vector<std::uint32_t> degenerate_fits(n, 0);
   std::vector<Double_point> next(n);
   for(unsigned int iteration = 0; iteration < s.filter.iterations; ++iteration)
   {
@@ -281,8 +323,10 @@ Point_set_denoising_summary denoise_all(Oriented_points& input, const Neighbor_l
     // with `in_place`.
     auto update = [&](std::size_t i, std::vector<Double_point>& target) {
       const auto neighbors = filter->neighbors(i);
-      const Vertex_update r = update_vertex(input.points, input.normals, i, neighbors.first, neighbors.second, u);
+      const Vertex_update r = update_vertex(input.points, original, input.normals, i, neighbors.first, neighbors.second, u);
       classes[i] = r.type;
+      smooth[i] = r.smooth ? 1 : 0;
+      degenerate_fits[i] += r.degenerate_fit ? 1 : 0;
       rank_deficient[i] += r.rank_deficient ? 1 : 0;
       const Eigen::Vector3d& x = r.position;
       const Double_point& o = original[i];
@@ -306,12 +350,19 @@ Point_set_denoising_summary denoise_all(Oriented_points& input, const Neighbor_l
     }
     ++summary.iterations;
     // Morozov's discrepancy principle: the points have moved as far as the noise took them away.
+    // The smooth points sit on their jets, which the iterations do not move on: the rule watches the
+    // others (all of them stop it at once).
     if(s.stop_at_noise_level)
     {
       double squares = 0.;
+      std::size_t counted = 0;
       for(std::size_t i = 0; i < n; ++i)
-        squares += CGAL::squared_distance(input.points[i], original[i]);
-      if(std::sqrt(squares / double(n)) >= DISCREPANCY_FACTOR * summary.noise_estimate)
+        if(!smooth[i])
+        {
+          squares += CGAL::squared_distance(input.points[i], original[i]);
+          ++counted;
+        }
+      if(counted == 0 || std::sqrt(squares / double(counted)) >= DISCREPANCY_FACTOR * summary.noise_estimate)
       {
         summary.stopped_at_noise_level = true;
         break;
@@ -336,6 +387,8 @@ Point_set_denoising_summary denoise_all(Oriented_points& input, const Neighbor_l
       default: ++summary.unclassified; break;
     }
     summary.rank_deficient += rank_deficient[i];
+    summary.smooth += smooth[i];
+    summary.degenerate_fits += degenerate_fits[i];
     summary.refused += refused[i];
     const double d = std::sqrt(CGAL::squared_distance(input.points[i], original[i]));
     total += d;
@@ -367,6 +420,7 @@ Point_set_denoising_summary denoise_all(Oriented_points& input, const Neighbor_l
      projected orthogonally to `e`; a planar point by `alpha` times the weighted mean offset
      `n_i * (p_j - p_i)` along `n_i`, weights `exp(-8 |n_i - n_j|^2 / r^2) exp(-4 |p_j - p_i|^2 / r^2)`, `r = 2 m`.
      A move that ends at `epsilon = 2 m` or farther from the point's input position is refused.
+     With `jet_vertex_update` (the default, below), a point on a smooth patch moves onto its jet instead.
 
   `m` is the mean distance of the input points to their 12 nearest neighbors; the neighborhoods, the
   balls `{j != i : |p_j - p_i| <= 5 m}` of the input positions, are built once.
@@ -395,7 +449,25 @@ Point_set_denoising_summary denoise_all(Oriented_points& input, const Neighbor_l
     their input positions reaches 1.1 times the noise level `sigma` estimated from
     the input (1.4826 times the median distance of a point to the quadric fitted to its 20 nearest
     neighbors): Morozov's discrepancy principle. `stop_at_noise_level(false)` runs all iterations.
-  - `authors_vertex_update(true)` with `rank_threshold(0)` gives the authors' stage 3.
+  - *A jet update on smooth patches* (`jet_vertex_update`, default `true`): the planar rule moves a
+    point towards the weighted mean plane of its neighbors, which on a curved patch lies inside the
+    surface, and stage 1 turns the normals of a curved patch into facets that stage 2 classifies as
+    strips (edges). Here every planar point, and every edge or corner whose fit window has less than
+    half of its weight beyond the normal sigmoid below (a facet, not a feature), is
+    *smooth* unless its fit neighbors' normals turn by less than 3 degrees on average (a flat
+    patch, where the planar rule averages more): it moves to `p0_i + c0 n_i`, where `c0` is the constant term of the weighted
+    least-squares quadric `z = c0 + c1 x + c2 y + c3 x^2 + c4 x y + c5 y^2` (a jet of order 2) of
+    `p0_i` and its neighbors' input positions `p0_j`, in the frame of the filtered normal `n_i`. The
+    weights are `sig_{30, 60 degrees}(angle(n_i, n_j)) exp(-|p0_j - p0_i|^2 / r^2)`: the sigmoid takes
+    the neighboring facets of a curved patch in and the other face of a sharp edge out, and
+    `r = 3.2 sqrt(sigma m)` in `[1.75 m, 3 m]` widens with the estimated noise level `sigma`. The fit is on the input positions, so that iterating does not shrink
+    the patch; the current normals decide only who enters it. A fit of total weight below 8 or with
+    ill-conditioned normal equations is degenerate: the point stays where it is (small and thin
+    inputs). The stopping rule watches the points that are not smooth (all smooth: one iteration).
+    The neighbors are those of stage 1: the ball, or with `adaptive_neighborhood_size(true)` the `k`
+    nearest of the size chosen per point; the distance weights bound the fit within them.
+    `jet_vertex_update(false)` gives the planar rule above.
+  - `authors_vertex_update(true)` with `rank_threshold(0)` gives the authors' stage 3 (and no jet update).
   - A point whose cone holds no neighbor keeps its normal (stage 1, as in `filter_normals()`), and a
     point whose cut-off neighborhood has no extent stays where it is (stage 2; the authors skip it too).
 
@@ -468,6 +540,13 @@ Point_set_denoising_summary denoise_all(Oriented_points& input, const Neighbor_l
         neighborhood, the full step for edges and corners, the normal term of width `r`}
       \cgalParamType{`bool`}
       \cgalParamDefault{`false`}
+    \cgalParamNEnd
+    \cgalParamNBegin{jet_vertex_update}
+      \cgalParamDescription{whether points on smooth patches move onto the quadric fitted to their
+        neighborhood (above) instead of towards the weighted mean plane; edges and corners keep the
+        restricted quadratic error metrics. Ignored with `authors_vertex_update(true)`}
+      \cgalParamType{`bool`}
+      \cgalParamDefault{`true`}
     \cgalParamNEnd
     \cgalParamNBegin{stop_at_noise_level}
       \cgalParamDescription{whether the iterations stop at the estimated noise level (above)}

@@ -24,6 +24,7 @@
 #include <CGAL/jet_smooth_point_set.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -53,7 +54,7 @@ typedef std::pair<Denoise_point, Denoise_vector> Denoise_item;
 struct Method_result
 {
   std::string method;
-  double mean_distance = 0., rms_distance = 0., normal_mse = -1.; // normal_mse < 0: the method gives none
+  double mean_distance = 0., rms_distance = 0., max_distance = 0., normal_mse = -1.; // normal_mse < 0: the method gives none
   double seconds = 0.;
   std::vector<double> distances; // per point
   std::vector<Denoise_point> points; // the method's output
@@ -105,6 +106,7 @@ public:
   void measure(const PointRange& points, PointMap point_map, Method_result& r) const
   {
     r.distances.clear();
+    r.max_distance = 0.;
     double sum = 0., squares = 0.;
     for(const auto& item : points)
     {
@@ -112,6 +114,7 @@ public:
       r.distances.push_back(std::sqrt(d2));
       sum += std::sqrt(d2);
       squares += d2;
+      r.max_distance = (std::max)(r.max_distance, std::sqrt(d2));
     }
     const double n = double(r.distances.size());
     r.mean_distance = sum / n;
@@ -189,6 +192,7 @@ inline std::vector<Method_result> compare_denoisers(const std::vector<Denoise_it
       const SN::Point_set_denoising_summary s = SN::denoise_point_set<SN::Parallel_if_available_tag>(
         items, parameters.point_map(point_map).normal_map(normal_map));
       return std::to_string(s.iterations) + " iterations, noise level " + std::to_string(s.noise_estimate) + ", " +
+             std::to_string(s.smooth) + " smooth, " + std::to_string(s.degenerate_fits) + " degenerate fits, " +
              std::to_string(s.planar) + " planar, " + std::to_string(s.edges) + " edges, " +
              std::to_string(s.corners) + " corners, " + std::to_string(s.refused) + " refused, " +
              std::to_string(s.rank_deficient) + " rank-deficient";
@@ -196,6 +200,8 @@ inline std::vector<Method_result> compare_denoisers(const std::vector<Denoise_it
   };
   namespace SNP = SN::parameters;
   package("package", SNP::number_of_threads(threads));
+  // the package's stage 3 before the jet update: every planar point towards the weighted mean plane
+  package("package, plane update", SNP::jet_vertex_update(false, SNP::number_of_threads(threads)));
   package("package, adaptive", SNP::adaptive_neighborhood_size(true, SNP::number_of_threads(threads)));
   // beyond the paper: every point's optimal sigmoid (a*, b*) weighs its votes
   package("package, (a*, b*) vote", SNP::optimal_vote_weights(true, SNP::number_of_threads(threads)));
