@@ -18,8 +18,8 @@ namespace Sigmoid_neighborhoods {
 /*!
   \ingroup PkgSigmoidNeighborhoodsRef
   the values the named parameters take when a call leaves them out (\ref
-  SigmoidNeighborhoodsNamedParameters): one place to read them from, for a program that shows them
-  to its users or passes them on explicitly.
+  Sigmoid_neighborhoods_named_parameters): one place to read them from, for a program that shows
+  them to its users or passes them on explicitly.
 */
 namespace defaults {
 
