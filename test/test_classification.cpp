@@ -11,7 +11,7 @@
 #include "classification/classify_common.h"
 
 #include <CGAL/Sigmoid_neighborhoods.h>
-#include "classification/Ethz_forest.h"
+#include <CGAL/Sigmoid_neighborhoods/Classification/Ethz_forest.h>
 #include <CGAL/Sigmoid_neighborhoods/Classification/add_point_features.h>
 #include <CGAL/Sigmoid_neighborhoods/Classification/compute_anchored_cgal_features.h>
 #include <CGAL/Sigmoid_neighborhoods/compute_height_features.h>
@@ -346,7 +346,7 @@ TEST_CASE("point features enter a CGAL Feature_set and train CGAL's random fores
     std::vector<std::vector<float>> confidence;
     public_forest.classify<CGAL::Parallel_if_available_tag>(
       points.size(), [&](std::size_t i, std::size_t f) { return file.columns[f].values[i]; }, classes, confidence,
-      threads);
+      SN::parameters::number_of_threads(threads));
     CHECK(classes == cgal_classes);
     CHECK(confidence == cgal_confidence);
   }
@@ -436,7 +436,7 @@ TEST_CASE("Ethz_forest::train: CGAL's Random_forest_classifier::train() bit for 
   for(const unsigned int threads : {1u, 2u, 3u})
   {
     const SN::Classification::Ethz_forest forest = SN::Classification::Ethz_forest::train<SN::Parallel_if_available_tag>(
-      rows, row_labels, 3, 7, 9, threads);
+      rows, row_labels, 3, 7, 9, SN::parameters::number_of_threads(threads));
     CHECK(forest.number_of_labels() == 3);
     CHECK(forest.number_of_features() == width);
     std::stringstream bytes;
@@ -497,7 +497,7 @@ TEST_CASE("Ethz_forest::train: a node no split separates reads the float before 
     std::vector<float> rows(1 + n * width, 0.5f);
     rows[0] = before_rows;
     const SN::Classification::Ethz_forest forest = SN::Classification::Ethz_forest::train<SN::Parallel_if_available_tag>(
-      rows, labels, 2, 5, 6, threads);
+      rows, labels, 2, 5, 6, SN::parameters::number_of_threads(threads));
     std::stringstream bytes;
     forest.save_configuration(bytes);
     return bytes.str();

@@ -11,7 +11,7 @@
 #include "feature_options.h"
 #include "label_mapping.h"
 
-#include "Ethz_forest.h"
+#include <CGAL/Sigmoid_neighborhoods/Classification/Ethz_forest.h>
 #include <CGAL/Sigmoid_neighborhoods/Classification/Feature_values.h>
 
 #include <CGAL/Classification/ETHZ/Random_forest_classifier.h>

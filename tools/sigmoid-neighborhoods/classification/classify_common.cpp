@@ -11,7 +11,6 @@
 #include "feature_groups.h"
 
 #include "../ply_output.h"
-#include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 
 #include <CGAL/Classification/Point_set_neighborhood.h>
 #include <CGAL/Classification/classify.h>
@@ -227,7 +226,7 @@ void train_forest(Training_rows& rows, Trained& t)
   // --threads bounds the trees trained at once; the forest does not depend on it
   t.forest.emplace(SN::Classification::Ethz_forest::train<SN::Parallel_if_available_tag>(
     rows.values, rows.labels, t.settings.labels.names.size(), t.settings.trees, t.settings.depth,
-    t.settings.features.threads));
+    SN::parameters::number_of_threads(t.settings.features.threads)));
   t.seconds = timer.time();
   t.training_points = rows.labels.size();
 }
@@ -366,11 +365,11 @@ Prediction predict(const Featured_file& file, const Classifier_settings& setting
   }
   else
   {
-    // CGAL's classify() with the confidences, on every core (see Ethz_forest)
+    // CGAL's classify() with the confidences, on the package's own loop (see Ethz_forest)
     const std::vector<const std::vector<double>*> ordered = ordered_columns(file.columns, settings.feature_names);
     trees->classify<CGAL::Parallel_if_available_tag>(
       n, [&](std::size_t i, std::size_t f) { return (*ordered[f])[i]; }, p.classes, p.confidence,
-      settings.features.threads);
+      SN::parameters::number_of_threads(settings.features.threads));
   }
   p.seconds = timer.time();
   p.seconds_loading = seconds_loading;

@@ -10,7 +10,7 @@
 #include "classify_common.h"
 #include "../phase_times.h"
 
-#include "Ethz_forest.h"
+#include <CGAL/Sigmoid_neighborhoods/Classification/Ethz_forest.h>
 
 #include <optional>
 #include <string>

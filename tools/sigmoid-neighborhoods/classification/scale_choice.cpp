@@ -10,7 +10,7 @@
 #include "feature_groups.h"
 #include "training_rows.h"
 
-#include "Ethz_forest.h"
+#include <CGAL/Sigmoid_neighborhoods/Classification/Ethz_forest.h>
 #include <Sigmoid_neighborhoods_readers/estimate_oriented_normals.h>
 #include <CGAL/Sigmoid_neighborhoods/concurrency.h>
 
@@ -224,13 +224,14 @@ Confusion cross_validated(const std::array<Training_rows, 2>& train, const std::
   for(std::size_t fold = 0; fold < 2; ++fold)
   {
     const SN::Classification::Ethz_forest forest = SN::Classification::Ethz_forest::train<SN::Parallel_if_available_tag>(
-      train[fold].values, train[fold].labels, s.labels.names.size(), s.trees, s.depth, s.features.threads);
+      train[fold].values, train[fold].labels, s.labels.names.size(), s.trees, s.depth,
+      SN::parameters::number_of_threads(s.features.threads));
     const Training_rows& other = test[1 - fold];
     std::vector<int> predicted;
     std::vector<std::vector<float>> confidence;
     forest.classify<SN::Parallel_if_available_tag>(
       other.labels.size(), [&](std::size_t i, std::size_t f) { return other.values[1 + i * width + f]; }, predicted,
-      confidence, s.features.threads);
+      confidence, SN::parameters::number_of_threads(s.features.threads));
     for(std::size_t i = 0; i < predicted.size(); ++i)
       pooled.add(other.labels[i], predicted[i]);
   }

@@ -1,43 +1,42 @@
 // Copyright (c) 2026 Sigmoid_neighborhoods contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The tool's classifier: CGAL's ETHZ random forest, checked, trained and run on every core.
+// Author(s): Sigmoid_neighborhoods contributors
 
-#ifndef SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_ETHZ_FOREST_H
-#define SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_ETHZ_FOREST_H
+#ifndef CGAL_SIGMOID_NEIGHBORHOODS_CLASSIFICATION_ETHZ_FOREST_H
+#define CGAL_SIGMOID_NEIGHBORHOODS_CLASSIFICATION_ETHZ_FOREST_H
 
 #include <CGAL/Sigmoid_neighborhoods/Classification/Feature_values.h>
+#include <CGAL/Sigmoid_neighborhoods/parameters.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/Search_settings.h>
+#include <CGAL/Sigmoid_neighborhoods/internal/parallel.h>
 
 #include <CGAL/Classification/ETHZ/internal/random-forest/forest.hpp>
 #include <CGAL/Classification/ETHZ/internal/random-forest/node-gini.hpp>
-#include <CGAL/tags.h>
-
-#ifdef _OPENMP
-#include <omp.h>
-#endif
+#include <CGAL/Named_function_parameters.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
-#include <exception>
 #include <istream>
 #include <memory>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace CGAL {
 namespace Sigmoid_neighborhoods {
 namespace Classification {
 
-/*
+/*!
+  \ingroup PkgSigmoidNeighborhoodsClassification
   the random forest of CGAL's `CGAL::Classification::ETHZ::Random_forest_classifier`, read from
-  the bytes its `save_configuration()` writes, that classifies many items on an OpenMP loop.
+  the bytes its `save_configuration()` writes, that classifies many items on the package's
+  deterministic parallel loop.
 
   CGAL's classifier reads each value through a `Feature_set`, which copies a shared pointer per
   feature and item: on more than one thread all threads then write the same reference counts, and
@@ -148,7 +147,7 @@ public:
     of `Feature_values` holding these values, its ground truth listing these items' labels (and -1
     for the items it skips), for any number of threads. CGAL's classifier copies every value into a
     matrix of its own, grown by `push_back`, and trains its trees in parallel on TBB alone; here the
-    caller's matrix is read in place and the trees are trained in parallel, each
+    caller's matrix is read in place and the trees are trained on the package's parallel loop, each
     from its own seed as CGAL seeds it.
     \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or `Parallel_if_available_tag`
     \tparam FeatureRange a contiguous range of `float` with `data()` and `size()` (`std::vector<float>`,
@@ -163,20 +162,20 @@ public:
     \param number_of_labels the labels the forest votes for
     \param num_trees the number of trees (CGAL's default: 25)
     \param max_depth the depth of the trees at most (CGAL's default: 20)
-    \param threads the number of threads (0, the default: OpenMP's default)
+    \param np optional: `number_of_threads` (0, the default: all)
     \pre `labels` is not empty, `features.size() - 1` is a multiple of `labels.size()`
   */
-  template <typename ConcurrencyTag, typename FeatureRange>
+  template <typename ConcurrencyTag, typename FeatureRange, typename CGAL_NP_TEMPLATE_PARAMETERS>
   static Ethz_forest train(const FeatureRange& features, const std::vector<int>& labels,
                            std::size_t number_of_labels, std::size_t num_trees, std::size_t max_depth,
-                           unsigned int threads = 0)
+                           const CGAL_NP_CLASS& np = CGAL::parameters::default_values())
   {
     namespace RF = CGAL::internal::liblearning::RandomForest;
     if(labels.empty() || features.size() == 0 || (features.size() - 1) % labels.size() != 0)
       throw std::invalid_argument("Ethz_forest::train: " + std::to_string(features.size()) + " values for " +
                                   std::to_string(labels.size()) + " items (one float, then the rows)");
     // RandomForest::train() of CGAL 5.5 with reset trees, no sample indices and seeds from 0, as
-    // Random_forest_classifier::train() calls it, with its loop over the trees on an OpenMP loop
+    // Random_forest_classifier::train() calls it, with its loop over the trees on the package's loop
     RF::ForestParams params;
     params.n_trees = num_trees;
     params.max_depth = max_depth;
@@ -199,8 +198,9 @@ public:
     const RF::AxisAlignedRandomSplitGenerator generator;
     const RF::Tree_training_functor<Forest::TreeType::NodeType, RF::AxisAlignedRandomSplitGenerator> train_tree(
       0, sample_idxes, forest->trees, samples, truth, p.n_in_bag_samples, generator);
-    for_each_item<ConcurrencyTag>(
-      p.n_trees, threads, [] { return 0; }, [&](std::size_t t, int&) { train_tree.apply(t); }, 1);
+    internal::for_each_index<ConcurrencyTag>(
+      p.n_trees, internal::number_of_threads(np), [] { return 0; },
+      [&](std::size_t t, int&) { train_tree.apply(t); }, 1);
     return Ethz_forest(std::move(forest), number_of_labels, p.n_features);
   }
 
@@ -222,11 +222,12 @@ public:
     \param value `value(i, f)` is convertible to `double`; it is called on several threads at once
     \param label_indices resized to `n`
     \param confidence resized to `number_of_labels()` columns of `n`
-    \param threads the number of threads (0, the default: OpenMP's default)
+    \param np optional: `number_of_threads` (0, the default: all)
   */
-  template <typename ConcurrencyTag, typename FeatureValue>
+  template <typename ConcurrencyTag, typename FeatureValue, typename CGAL_NP_TEMPLATE_PARAMETERS>
   void classify(std::size_t n, const FeatureValue& value, std::vector<int>& label_indices,
-                std::vector<std::vector<float>>& confidence, unsigned int threads = 0) const
+                std::vector<std::vector<float>>& confidence,
+                const CGAL_NP_CLASS& np = CGAL::parameters::default_values()) const
   {
     label_indices.assign(n, 0);
     confidence.assign(m_labels, std::vector<float>(n, 0.f));
@@ -236,8 +237,8 @@ public:
     };
     // One float before the sample, 0: CGAL 5.5 leaves the feature of a node whose proposals all
     // failed at -1, and its trees then read the value before the sample.
-    for_each_item<ConcurrencyTag>(
-      n, threads,
+    internal::for_each_index<ConcurrencyTag>(
+      n, internal::number_of_threads(np),
       [&] {
         return Scratch{std::vector<float>(m_features + 1, 0.f), std::vector<float>(m_labels, 0.f)};
       },
@@ -261,45 +262,6 @@ public:
   }
 
 private:
-  // body(i, scratch) for every i < n, on `threads` threads (0: OpenMP's default; Sequential_tag or a
-  // build without OpenMP: one), `chunk` indices at a time, each thread with its own make_scratch();
-  // every index writes only its own results, so the results do not depend on the threads. The first
-  // exception thrown is rethrown once the loop is done.
-  template <typename ConcurrencyTag, typename MakeScratch, typename Body>
-  static void for_each_item(std::size_t n, unsigned int threads, const MakeScratch& make_scratch, const Body& body,
-                            int chunk)
-  {
-    std::exception_ptr failure;
-#ifdef _OPENMP
-    const bool parallel = !std::is_same<ConcurrencyTag, CGAL::Sequential_tag>::value && n > 1;
-    const int count = parallel ? (threads == 0 ? omp_get_max_threads() : int(threads)) : 1;
-#pragma omp parallel num_threads(count)
-#endif
-    {
-      auto scratch = make_scratch();
-#ifdef _OPENMP
-#pragma omp for schedule(dynamic, chunk)
-#endif
-      for(std::ptrdiff_t i = 0; i < std::ptrdiff_t(n); ++i)
-      {
-        try
-        {
-          body(std::size_t(i), scratch);
-        }
-        catch(...)
-        {
-#ifdef _OPENMP
-#pragma omp critical(ethz_forest_failure)
-#endif
-          if(!failure)
-            failure = std::current_exception();
-        }
-      }
-    }
-    if(failure)
-      std::rethrow_exception(failure);
-  }
-
   Ethz_forest(std::unique_ptr<Forest> forest, std::size_t number_of_labels, std::size_t number_of_features)
     : m_labels(number_of_labels), m_features(number_of_features), m_forest(std::move(forest))
   {
@@ -313,4 +275,4 @@ private:
 } // namespace Sigmoid_neighborhoods
 } // namespace CGAL
 
-#endif // SIGMOID_NEIGHBORHOODS_TOOL_CLASSIFICATION_ETHZ_FOREST_H
+#endif // CGAL_SIGMOID_NEIGHBORHOODS_CLASSIFICATION_ETHZ_FOREST_H
