@@ -57,25 +57,9 @@ inline void write_table4_csv(std::ostream& out, const std::vector<Denoise_result
   }
 }
 
-inline void write_table4_markdown(std::ostream& out, const std::vector<Denoise_result>& results,
-                                  const std::vector<std::pair<std::string, std::string>>& sources,
-                                  const std::vector<std::pair<std::string, std::string>>& skipped,
-                                  const Denoise_options& o)
+// The paper's layout: one row per model, the noise levels side by side; bold the smallest of three.
+inline void write_table4_rows(std::ostream& out, const std::vector<Denoise_result>& results, const Denoise_options& o)
 {
-  out << "# Table 4: normal filtering with default and adaptive neighborhood sizes\n\n";
-  out << "Noise: Gaussian offsets along the noise-free vertex normals, sd = level x l, l = mean distance of the "
-         "points to their 6 nearest neighbors (noise-free), `std::mt19937_64` seed "
-      << o.seed << " for every model and level, drawn in vertex order. ";
-  out << "Filter input normals: "
-      << (o.pca_normals ? "PCA over the 12 nearest neighbors (CGAL `pca_estimate_normals`), oriented like the "
-                          "noise-free normals"
-                        : "vertex normals of the noisy mesh (CGAL `compute_vertex_normals`, as the noise-free ones)")
-      << ". Filter: Yadav et al. (2018) stage 1, `(p, cut-off, eigenvalue threshold)` per model (SPEC §7), damping "
-         "3, balls of radius 5 m (m = mean 12-NN distance of the noisy points); adaptive: every point takes the "
-         "`k` of least `E_dim` in `{k_i - 10, ..., k_i + 10}` with `a = b = arccos(cut-off)` before each sweep. "
-         "MSE = mean `|n - n~|^2` against the noise-free vertex normals.\n\n";
-
-  // The paper's layout: one row per model, the noise levels side by side.
   std::vector<std::string> models;
   for(const auto& r : results)
     if(std::find(models.begin(), models.end(), r.model) == models.end())
@@ -104,6 +88,11 @@ inline void write_table4_markdown(std::ostream& out, const std::vector<Denoise_r
   }
   out << "\nBold: the smallest of the three.\n\n";
 
+}
+
+// Whether adaptive < default holds, beside the paper's numbers.
+inline void write_table4_comparison(std::ostream& out, const std::vector<Denoise_result>& results)
+{
   out << "## Does adaptive < default hold (the paper: on every model)?\n\n";
   out << "| model | noise | MSE(default) | MSE(adaptive) | adaptive - default | adaptive < default | "
          "paper: MSE(Noise) | paper: default | paper: adaptive |\n|---|---:|---:|---:|---:|:---:|---:|---:|---:|\n";
@@ -125,6 +114,11 @@ inline void write_table4_markdown(std::ostream& out, const std::vector<Denoise_r
   }
   out << "\nAdaptive < default holds for " << holds << " of " << results.size() << " model/noise pairs here.\n\n";
 
+}
+
+// The neighborhoods of every run.
+inline void write_table4_neighborhoods(std::ostream& out, const std::vector<Denoise_result>& results)
+{
   out << "## Neighborhoods\n\n";
   out << "| model | noise | p | cut-off | threshold | l | radius 5 m | mean k_i | mean adaptive k | "
          "fallbacks | empty cones (default) | empty cones (adaptive) |\n"
@@ -142,6 +136,29 @@ inline void write_table4_markdown(std::ostream& out, const std::vector<Denoise_r
   out << "\nFallbacks and empty cones count point-sweeps. A fallback is a point whose every size is degenerate "
          "with the cut-off weights: it votes with its default neighborhood and equal weights.\n\n";
 
+}
+
+inline void write_table4_markdown(std::ostream& out, const std::vector<Denoise_result>& results,
+                                  const std::vector<std::pair<std::string, std::string>>& sources,
+                                  const std::vector<std::pair<std::string, std::string>>& skipped,
+                                  const Denoise_options& o)
+{
+  out << "# Table 4: normal filtering with default and adaptive neighborhood sizes\n\n";
+  out << "Noise: Gaussian offsets along the noise-free vertex normals, sd = level x l, l = mean distance of the "
+         "points to their 6 nearest neighbors (noise-free), `std::mt19937_64` seed "
+      << o.seed << " for every model and level, drawn in vertex order. ";
+  out << "Filter input normals: "
+      << (o.pca_normals ? "PCA over the 12 nearest neighbors (CGAL `pca_estimate_normals`), oriented like the "
+                          "noise-free normals"
+                        : "vertex normals of the noisy mesh (CGAL `compute_vertex_normals`, as the noise-free ones)")
+      << ". Filter: Yadav et al. (2018) stage 1, `(p, cut-off, eigenvalue threshold)` per model (SPEC §7), damping "
+         "3, balls of radius 5 m (m = mean 12-NN distance of the noisy points); adaptive: every point takes the "
+         "`k` of least `E_dim` in `{k_i - 10, ..., k_i + 10}` with `a = b = arccos(cut-off)` before each sweep. "
+         "MSE = mean `|n - n~|^2` against the noise-free vertex normals.\n\n";
+
+  write_table4_rows(out, results, o);
+  write_table4_comparison(out, results);
+  write_table4_neighborhoods(out, results);
   out << "## Models\n\n";
   for(const auto& s : sources)
     out << "- " << s.first << ": " << s.second << '\n';
