@@ -21,7 +21,6 @@
 #include <filesystem>
 #include <fstream>
 #include <istream>
-#include <limits>
 #include <string>
 #include <system_error>
 
@@ -53,8 +52,6 @@ constexpr unsigned int LAS_LAST_MINOR_VERSION = 4;
 constexpr unsigned int LAS_LAST_POINT_FORMAT = 10; // LAS_POINT_RECORD_BYTES: Las_header.h
 constexpr unsigned int LAS_FIRST_EXTENDED_FORMAT = 6; // formats 6-10: 8-bit classification, 4-bit returns
 constexpr unsigned int LAS_COMPRESSION_BITS = 0xC0;   // of the format byte: LAZ
-// a file of unknown size: its counts are not bounded by it
-constexpr std::uintmax_t UNKNOWN_FILE_SIZE = (std::numeric_limits<std::uintmax_t>::max)();
 constexpr unsigned int LAS_FORMAT_BITS = 0x3F;
 constexpr std::size_t LAS_CHUNK_BYTES = std::size_t(1) << 22; // records read at a time
 
@@ -136,7 +133,7 @@ inline Las_header read_las_header(std::istream& in, std::uintmax_t file_size)
   // hundred bytes could otherwise ask for gigabytes.
   const std::uintmax_t left = file_size - h.offset_to_point_data;
   const std::uintmax_t each = (std::max)(std::uintmax_t(h.record_length), std::uintmax_t(1));
-  if(file_size != UNKNOWN_FILE_SIZE && h.point_count > left / each)
+  if(h.point_count > left / each)
   {
     auto bytes = [](std::uintmax_t n) { return std::to_string(n) + (n == 1 ? " byte" : " bytes"); };
     throw Input_error(las_error("the header announces " + std::to_string(h.point_count) + " points of " +
